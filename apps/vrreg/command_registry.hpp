@@ -1,0 +1,32 @@
+#pragma once
+// Each command lives in its own cmd_<name>.cpp and registers itself here, so adding a command
+// touches no other file. `order` fixes the position in --help.
+#include <functional>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace vrreg::cli {
+
+using CommandSetup = std::function<void(CLI::App& app)>;
+
+struct CommandEntry {
+  int order;
+  CommandSetup setup;
+};
+
+std::vector<CommandEntry>& command_registry();
+
+struct CommandRegistrar {
+  CommandRegistrar(int order, CommandSetup setup) {
+    command_registry().push_back({order, std::move(setup)});
+  }
+};
+
+}  // namespace vrreg::cli
+
+#define VRREG_CONCAT_INNER(a, b) a##b
+#define VRREG_CONCAT(a, b) VRREG_CONCAT_INNER(a, b)
+/// Registers a command set-up function: VRREG_REGISTER_COMMAND(10, add_register_command);
+#define VRREG_REGISTER_COMMAND(order, fn) \
+  static const ::vrreg::cli::CommandRegistrar VRREG_CONCAT(vrreg_registrar_, __LINE__)(order, fn)

@@ -1,0 +1,47 @@
+// vrreg: the command line. Parses, calls the library, writes through io. The only place that
+// catches exceptions and maps them to exit codes:
+//   0 success, 1 bad input or a failed computation (one line on stderr), 2 usage error.
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include <CLI/CLI.hpp>
+
+#include "command_registry.hpp"
+#include "vrreg/core/check.hpp"
+
+namespace vrreg::cli {
+
+std::vector<CommandEntry>& command_registry() {
+  static std::vector<CommandEntry> registry;
+  return registry;
+}
+
+}  // namespace vrreg::cli
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "vrreg: point-based vision-robot registration with Restoration of the Rigid Body "
+      "Condition (RRBC).\nLengths are printed in mm. Run 'vrreg COMMAND --help' for a command.",
+      "vrreg"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "vrreg 0.1.0");
+  auto& registry = vrreg::cli::command_registry();
+  std::stable_sort(registry.begin(), registry.end(),
+                   [](const auto& a, const auto& b) { return a.order < b.order; });
+  for (const auto& entry : registry) entry.setup(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "vrreg: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "vrreg: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,17 @@
+# vrreg_module(name DEPS ...): library vrreg_<name> from src/<name>/*.cpp, public headers in
+# include/vrreg/<name>/. A module without sources yet is an INTERFACE library.
+function(vrreg_module name)
+  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*.cpp)
+  if(sources)
+    add_library(vrreg_${name} STATIC ${sources})
+    target_include_directories(vrreg_${name} PUBLIC ${PROJECT_SOURCE_DIR}/include)
+    target_link_libraries(vrreg_${name} PUBLIC ${ARG_DEPS})
+    vrreg_set_warnings(vrreg_${name})
+  else()
+    add_library(vrreg_${name} INTERFACE)
+    target_include_directories(vrreg_${name} INTERFACE ${PROJECT_SOURCE_DIR}/include)
+    target_link_libraries(vrreg_${name} INTERFACE ${ARG_DEPS})
+  endif()
+  add_library(vrreg::${name} ALIAS vrreg_${name})
+endfunction()

@@ -1,0 +1,46 @@
+#pragma once
+// A measurement set: locations measured in both frames, after averaging repeat readings.
+// Plain data shared by io (which fills it) and the domain modules (which read it).
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vrreg/core/types.hpp"
+
+namespace vrreg {
+
+/// What a location is used for: fiducials build the registration, targets test it.
+enum class Role { kFiducial, kTarget };
+
+/// One measured location: a (point, config) pair with its repeat readings averaged.
+struct Location {
+  std::string point;              ///< point label from the file
+  Role role = Role::kFiducial;
+  std::optional<int> config;      ///< arm configuration label, when the file has one
+  bool has_robot = true;          ///< false for points measured in the sensor frame only
+  Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();   ///< nominal (commanded) position, robot frame
+  Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();  ///< mean measured position, sensor frame
+  int n_readings = 0;             ///< number of repeat readings averaged into sensor_m
+  Eigen::Vector3d sensor_sq_dev_m2 = Eigen::Vector3d::Zero();  ///< per-axis sum of squared deviations
+  std::vector<double> q_rad;      ///< joint angles, empty when absent
+  std::size_t source_line = 0;    ///< first line of the file this location came from (1-based)
+};
+
+/// All locations of one file, in the order of their first reading (the visiting order).
+struct MeasurementSet {
+  std::string source;             ///< file name, for messages
+  std::vector<Location> locations;
+  int n_joints = 0;               ///< joint columns in the file (0 when none)
+  bool has_config = false;
+  bool has_repeat = false;
+
+  /// Indices of the locations with this role and, if given, this configuration label.
+  [[nodiscard]] std::vector<std::size_t> select(Role role, std::optional<int> config = {}) const;
+  /// Nominal robot-frame positions of the given locations, one column each [m].
+  [[nodiscard]] Points3 robot_points(const std::vector<std::size_t>& indices) const;
+  /// Mean sensor-frame positions of the given locations, one column each [m].
+  [[nodiscard]] Points3 sensor_points(const std::vector<std::size_t>& indices) const;
+};
+
+}  // namespace vrreg

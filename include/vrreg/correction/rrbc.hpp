@@ -1,0 +1,47 @@
+#pragma once
+// RRBC (paper section 3.2): corrections to the fiducials (Eq. 6) and their interpolation (Eq. 7).
+#include <array>
+
+#include <Eigen/Core>
+
+#include "vrreg/core/types.hpp"
+
+namespace vrreg {
+
+/// epsilon_j = R' Y_j - R' tau - X_j (Eq. 6, divided by the scale when there is one): the shift
+/// that puts each measured fiducial X_j [m, sensor] where the registration says its robot
+/// position Y_j [m, robot] is. Returns one column per fiducial, sensor frame [m].
+Points3 fiducial_corrections(const RigidTransform& T_robot_sensor,
+                             const ConstPoints3Ref& fiducials_sensor_m,
+                             const ConstPoints3Ref& fiducials_robot_m);
+
+/// Why a target has no interpolated correction.
+enum class StencilStatus {
+  kOk,             ///< weights found
+  kOutsideGrid,    ///< grid: registered position outside the grid
+  kOutsideHull,    ///< scattered: outside the convex hull of the fiducials (never extrapolated)
+  kMissingCorner,  ///< octuplet: a cube corner has no fiducial
+};
+
+/// The fiducials and weights that carry corrections to one target (Eq. 7): sum of weights = 1.
+struct Stencil {
+  std::array<Eigen::Index, 8> fiducial{};  ///< column indices into the fiducial set
+  std::array<double, 8> weight{};
+  int size = 0;                            ///< entries in use (8 grid/octuplet, 4 scattered)
+  StencilStatus status = StencilStatus::kOk;
+};
+
+/// epsilon(T_X) = sum_n w_n epsilon_n (Eq. 7) for a stencil whose status is kOk.
+inline Eigen::Vector3d interpolate_correction(const Stencil& stencil,
+                                              const ConstPoints3Ref& corrections_sensor_m) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int k = 0; k < stencil.size; ++k) {
+    sum += stencil.weight[static_cast<std::size_t>(k)] *
+           corrections_sensor_m.col(stencil.fiducial[static_cast<std::size_t>(k)]);
+  }
+  return sum;
+}
+
+const char* to_string(StencilStatus status);
+
+}  // namespace vrreg

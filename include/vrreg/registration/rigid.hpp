@@ -1,0 +1,40 @@
+#pragma once
+// Point-based rigid registration (paper Eq. 2): least squares via the SVD of the 3x3
+// cross-covariance, always a proper rotation, optional uniform scale.
+#include <Eigen/Core>
+
+#include "vrreg/core/types.hpp"
+
+namespace vrreg {
+
+/// Options for register_rigid.
+struct RegistrationOptions {
+  bool estimate_scale = false;  ///< also fit a uniform scale (Umeyama); off in the paper
+  /// Smallest allowed ratio of the 2nd to the 1st singular value of the centred sensor points:
+  /// below it the points are called collinear (or coincident) and registration refuses.
+  double collinearity_tolerance = 1e-6;
+  void validate() const;
+};
+
+/// Result of register_rigid.
+struct RegistrationResult {
+  RigidTransform T_robot_sensor;        ///< maps sensor points onto robot points: Y ~ R X + tau
+  double fre_m = 0.0;                   ///< FRE, Eq. 2 (weighted RMS when weights are given)
+  Eigen::VectorXd residuals_m;          ///< ||R X_j + tau - Y_j|| per point
+  /// Singular values of the centred sensor point set / sqrt(J), largest first [m]: the RMS
+  /// spread along the principal axes. A small third value means a nearly planar layout.
+  Eigen::Vector3d spread_m = Eigen::Vector3d::Zero();
+  double collinearity = 0.0;            ///< spread_m(1) / spread_m(0): 0 for collinear points
+};
+
+/// Registers sensor points onto robot points (Eq. 2): minimises sum_j w_j ||s R X_j + tau - Y_j||^2.
+/// points_sensor_m, points_robot_m: corresponding points [m]; weights: one non-negative value per
+/// point, or empty for equal weights. Throws InputError for fewer than 3 points, non-finite values,
+/// mismatched sizes or collinear / coincident points.
+RegistrationResult register_rigid(const ConstPoints3Ref& points_sensor_m,
+                                  const ConstPoints3Ref& points_robot_m,
+                                  const RegistrationOptions& options = {},
+                                  const Eigen::Ref<const Eigen::VectorXd>& weights =
+                                      Eigen::VectorXd());
+
+}  // namespace vrreg

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Quick start, command 1: install, build, run the main job.
+# The main job: register -> evaluate -> correct on the example cell that the repo ships
+# (examples/data/example-cell.csv, made by build/release/examples/example_01_make_example_cell).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+scripts/build.sh release
+vrreg=build/release/bin/vrreg
+data=examples/data/example-cell.csv
+mkdir -p out
+echo "== vrreg register --fiducials $data -o out/model.json"
+"$vrreg" register --fiducials "$data" -o out/model.json
+echo
+echo "== vrreg evaluate --model out/model.json --targets $data"
+"$vrreg" evaluate --model out/model.json --targets "$data" --per-target out/per-target.csv
+echo
+echo "== vrreg correct --model out/model.json --points $data -o out/corrected.csv"
+"$vrreg" correct --model out/model.json --points "$data" -o out/corrected.csv
