@@ -2,7 +2,7 @@
 
 namespace vrreg {
 
-Points3 RigidTransform::apply(const ConstPoints3Ref& points_m) const {
+Points3 RigidTransform::apply_all(const ConstPoints3Ref& points_m) const {
   Points3 out = scale * (rotation * points_m);
   out.colwise() += translation_m;
   return out;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "vrreg/core/random.hpp"

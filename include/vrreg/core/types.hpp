@@ -20,8 +20,8 @@ struct RigidTransform {
   [[nodiscard]] Eigen::Vector3d apply(const Eigen::Vector3d& point_m) const {
     return scale * (rotation * point_m) + translation_m;
   }
-  /// Maps every column of `points_m`.
-  [[nodiscard]] Points3 apply(const ConstPoints3Ref& points_m) const;
+  /// Maps every column of `points_m` (a separate name: a column would make `apply` ambiguous).
+  [[nodiscard]] Points3 apply_all(const ConstPoints3Ref& points_m) const;
   /// The inverse map (paper Eq. 6: R_inv = R', tau_inv = -R' tau, divided by the scale).
   [[nodiscard]] RigidTransform inverse() const;
   /// Composition: (this * other).apply(x) == this->apply(other.apply(x)).

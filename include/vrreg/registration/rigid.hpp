@@ -21,8 +21,9 @@ struct RegistrationResult {
   RigidTransform T_robot_sensor;        ///< maps sensor points onto robot points: Y ~ R X + tau
   double fre_m = 0.0;                   ///< FRE, Eq. 2 (weighted RMS when weights are given)
   Eigen::VectorXd residuals_m;          ///< ||R X_j + tau - Y_j|| per point
-  /// Singular values of the centred sensor point set / sqrt(J), largest first [m]: the RMS
-  /// spread along the principal axes. A small third value means a nearly planar layout.
+  /// RMS spread of the fiducials along the principal axes, largest first [m]: sqrt of the singular
+  /// values of the centred cross-covariance / J (exactly the point set's spread for rigid data).
+  /// A small third value means a nearly planar layout, a small second one a nearly collinear one.
   Eigen::Vector3d spread_m = Eigen::Vector3d::Zero();
   double collinearity = 0.0;            ///< spread_m(1) / spread_m(0): 0 for collinear points
 };

@@ -1,0 +1,24 @@
+#pragma once
+// Noise level from repeat readings and the rho criterion (paper section 4.3, Eq. 9).
+#include <optional>
+#include <vector>
+
+#include "vrreg/core/measurement.hpp"
+
+namespace vrreg {
+
+/// sigma_opt: sqrt of the average, over locations with >= 2 readings, of the per-axis sample
+/// variance of the repeat readings (averaged over x, y, z): a per-axis standard deviation [m].
+/// Empty when no location has repeats.
+std::optional<double> sigma_opt_m(const std::vector<Location>& locations);
+
+/// sigma_noise = sqrt(sigma_opt^2 + sigma_rep^2) (Eq. 9) [m].
+double sigma_noise_m(double sigma_opt_m, double sigma_rep_m);
+
+/// rho = sigma_L / sigma_noise: RRBC helps when rho > 2.5 (paper section 5.1).
+double rho(double sigma_l_m, double sigma_noise_m);
+
+/// The threshold on rho below which RRBC is not expected to help.
+inline constexpr double kRhoThreshold = 2.5;
+
+}  // namespace vrreg

@@ -1,0 +1,34 @@
+#include "vrreg/metrics/noise.hpp"
+
+#include <cmath>
+
+#include "vrreg/core/check.hpp"
+
+namespace vrreg {
+
+std::optional<double> sigma_opt_m(const std::vector<Location>& locations) {
+  double sum_var = 0.0;
+  int used = 0;
+  for (const Location& loc : locations) {
+    if (loc.n_readings < 2) continue;
+    sum_var += loc.sensor_sq_dev_m2.sum() / (3.0 * (loc.n_readings - 1));
+    ++used;
+  }
+  if (used == 0) return std::nullopt;
+  return std::sqrt(sum_var / used);
+}
+
+double sigma_noise_m(double sigma_opt, double sigma_rep) {
+  VRREG_THROW_UNLESS(sigma_opt >= 0.0 && sigma_rep >= 0.0 && std::isfinite(sigma_opt) &&
+                         std::isfinite(sigma_rep),
+                     "noise levels must be finite and non-negative, got sigma_opt="
+                         << sigma_opt << " m, sigma_rep=" << sigma_rep << " m");
+  return std::hypot(sigma_opt, sigma_rep);
+}
+
+double rho(double sigma_l, double sigma_noise) {
+  VRREG_THROW_UNLESS(sigma_noise > 0.0, "rho needs a positive sigma_noise, got " << sigma_noise);
+  return sigma_l / sigma_noise;
+}
+
+}  // namespace vrreg
