@@ -59,8 +59,9 @@ Moments accumulate(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
 
 // RMS spread along the principal axes, largest first.
 Eigen::Vector3d principal_spread(const Eigen::Matrix3d& covariance) {
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  eig.computeDirect(covariance, Eigen::EigenvaluesOnly);  // closed form: ample for a spread
+  // Iterative, not computeDirect: the closed form leaves ~1e-13 relative on a zero eigenvalue,
+  // which would hide exact collinearity. Only the failure path calls this.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(covariance, Eigen::EigenvaluesOnly);
   const Eigen::Vector3d ev = eig.eigenvalues().cwiseMax(0.0);  // ascending
   return {std::sqrt(ev[2]), std::sqrt(ev[1]), std::sqrt(ev[0])};
 }

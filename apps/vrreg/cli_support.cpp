@@ -1,0 +1,64 @@
+#include "cli_support.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
+
+namespace vrreg::cli {
+
+std::string mm(double metres, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, units::m_to_mm(metres));
+  return buf;
+}
+
+std::string mm3(const Eigen::Vector3d& metres, int decimals) {
+  return "[" + mm(metres[0], decimals) + ", " + mm(metres[1], decimals) + ", " +
+         mm(metres[2], decimals) + "]";
+}
+
+nlohmann::json json_mm3(const Eigen::Vector3d& metres) {
+  return {units::m_to_mm(metres[0]), units::m_to_mm(metres[1]), units::m_to_mm(metres[2])};
+}
+
+void InterpolationFlags::add_to(CLI::App& command) {
+  command.add_option("--interpolation", method,
+                     "how corrections reach targets: auto (grid if the fiducials hold a complete "
+                     "grid, else scattered), grid, scattered, octuplet")
+      ->check(CLI::IsMember({"auto", "grid", "scattered", "octuplet"}));
+  command.add_option("--cube-mm", cube_mm,
+                     "octuplet cube edge in mm (fiducials at the 8 corners around each target)")
+      ->check(CLI::PositiveNumber);
+}
+
+InterpolationSettings InterpolationFlags::apply(InterpolationSettings stored) const {
+  if (!method.empty()) stored.method = parse_interpolation_method(method);
+  if (cube_mm) {
+    stored.cube_edge_m = units::mm_to_m(*cube_mm);
+    if (method.empty()) stored.method = InterpolationMethod::kOctuplet;
+  }
+  VRREG_THROW_UNLESS(stored.method != InterpolationMethod::kOctuplet || stored.cube_edge_m > 0.0,
+                     "--interpolation octuplet needs --cube-mm EDGE");
+  return stored;
+}
+
+std::vector<std::size_t> select_rows(const MeasurementSet& set, Role role,
+                                     std::optional<int> config) {
+  std::vector<std::size_t> rows = set.select(role, config);
+  const char* what = role == Role::kFiducial ? "fiducial" : "target";
+  if (config) {
+    VRREG_THROW_UNLESS(set.has_config, set.source << ": --config " << *config
+                                                  << " given but the file has no config column");
+    VRREG_THROW_UNLESS(!rows.empty(),
+                       set.source << ": no " << what << " rows with config " << *config);
+  }
+  VRREG_THROW_UNLESS(!rows.empty(), set.source << ": no " << what << " rows");
+  return rows;
+}
+
+void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
+
+}  // namespace vrreg::cli

@@ -1,0 +1,181 @@
+// vrreg register: rigid registration of fiducials (Eq. 2), the rigid-body condition (Eq. 1),
+// noise (Eq. 9) and the RRBC fiducial corrections (Eq. 6), saved as a model for evaluate/correct.
+#include <cstdio>
+#include <iostream>
+
+#include "cli_support.hpp"
+#include "command_registry.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/correction/rrbc.hpp"
+#include "vrreg/io/file_error.hpp"
+#include "vrreg/io/measurement_csv.hpp"
+#include "vrreg/io/model_json.hpp"
+#include "vrreg/metrics/noise.hpp"
+#include "vrreg/metrics/rigid_body.hpp"
+#include "vrreg/registration/robust.hpp"
+
+namespace vrreg::cli {
+namespace {
+
+struct RegisterArgs {
+  std::string fiducials;
+  std::optional<int> config;
+  bool scale = false;
+  bool robust = false;
+  std::optional<double> sigma_rep_mm;
+  InterpolationFlags interpolation;
+  std::string output;
+  bool json = false;
+};
+
+void run_register_unchecked(const RegisterArgs& args);
+
+void run_register(const RegisterArgs& args) {
+  try {
+    run_register_unchecked(args);
+  } catch (const io::FileError&) {
+    throw;  // already names file and line
+  } catch (const InputError& e) {
+    // Degenerate geometry and the like come from the library without a file name.
+    throw InputError(args.fiducials + ": " + e.what());
+  }
+}
+
+void run_register_unchecked(const RegisterArgs& args) {
+  const MeasurementSet set = io::read_measurement_csv(args.fiducials);
+  const std::vector<std::size_t> rows = select_rows(set, Role::kFiducial, args.config);
+  Points3 sensor = set.sensor_points(rows);
+  Points3 robot = set.robot_points(rows);
+
+  RegistrationModel model;
+  model.source = args.fiducials;
+  model.config = args.config;
+  model.interpolation = args.interpolation.apply(model.interpolation);
+
+  RegistrationOptions reg_options;
+  reg_options.estimate_scale = args.scale;
+  std::vector<std::size_t> kept = rows;
+  std::vector<std::string> rejected;
+  RegistrationResult reg;
+  if (args.robust) {
+    RobustRegistrationOptions robust_options;
+    robust_options.registration = reg_options;
+    const RobustRegistrationResult r = register_rigid_robust(sensor, robot, robust_options);
+    VRREG_THROW_UNLESS(r.converged, args.fiducials << ": robust registration failed: " << r.message);
+    kept.clear();
+    std::size_t next_rejected = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      if (next_rejected < r.rejected.size() &&
+          r.rejected[next_rejected] == static_cast<Eigen::Index>(k)) {
+        rejected.push_back(set.locations[rows[k]].point);
+        ++next_rejected;
+      } else {
+        kept.push_back(rows[k]);
+      }
+    }
+    sensor = set.sensor_points(kept);
+    robot = set.robot_points(kept);
+  }
+  reg = register_rigid(sensor, robot, reg_options);
+  model.T_robot_sensor = reg.T_robot_sensor;
+  model.fre_m = reg.fre_m;
+  for (std::size_t i : kept) model.fiducials.push_back(set.locations[i]);
+  model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, sensor, robot);
+  const RigidBodyStatistics rb = rigid_body_statistics(sensor, robot);
+  model.sigma_l_m = rb.sigma_l_m;
+
+  std::vector<Location> kept_locations = model.fiducials;
+  const std::optional<double> sigma_opt = sigma_opt_m(kept_locations);
+  std::optional<double> sigma_noise;
+  if (sigma_opt || args.sigma_rep_mm) {
+    sigma_noise = sigma_noise_m(sigma_opt.value_or(0.0), units::mm_to_m(args.sigma_rep_mm.value_or(0.0)));
+  }
+  std::optional<double> rho_value;
+  if (sigma_noise && *sigma_noise > 0.0) rho_value = rho(rb.sigma_l_m, *sigma_noise);
+
+  if (!args.output.empty()) io::write_model_json(args.output, model);
+
+  const Eigen::Matrix3d& r = model.T_robot_sensor.rotation;
+  if (args.json) {
+    nlohmann::json j;
+    j["source"] = args.fiducials;
+    j["config"] = args.config ? nlohmann::json(*args.config) : nlohmann::json(nullptr);
+    j["n_fiducials"] = kept.size();
+    j["rotation"] = {{r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)},
+                     {r(2, 0), r(2, 1), r(2, 2)}};
+    j["translation_mm"] = json_mm3(model.T_robot_sensor.translation_m);
+    j["scale"] = model.T_robot_sensor.scale;
+    j["fre_mm"] = units::m_to_mm(reg.fre_m);
+    j["sigma_l_mm"] = units::m_to_mm(rb.sigma_l_m);
+    j["mean_l_mm"] = units::m_to_mm(rb.mean_m);
+    j["pairs"] = rb.pairs;
+    j["spread_mm"] = json_mm3(reg.spread_m);
+    if (sigma_opt) j["sigma_opt_mm"] = units::m_to_mm(*sigma_opt);
+    if (args.sigma_rep_mm) j["sigma_rep_mm"] = *args.sigma_rep_mm;
+    if (sigma_noise) j["sigma_noise_mm"] = units::m_to_mm(*sigma_noise);
+    if (rho_value) j["rho"] = *rho_value;
+    j["rejected"] = rejected;
+    j["model"] = args.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(args.output);
+    print_json(j);
+    return;
+  }
+  std::printf("registered %zu fiducials from %s%s\n", kept.size(), args.fiducials.c_str(),
+              args.config ? (" (config " + std::to_string(*args.config) + ")").c_str() : "");
+  std::printf("  rotation R (sensor -> robot)  [% .9f % .9f % .9f]\n", r(0, 0), r(0, 1), r(0, 2));
+  std::printf("                                [% .9f % .9f % .9f]\n", r(1, 0), r(1, 1), r(1, 2));
+  std::printf("                                [% .9f % .9f % .9f]\n", r(2, 0), r(2, 1), r(2, 2));
+  std::printf("  translation tau               %s mm\n", mm3(model.T_robot_sensor.translation_m).c_str());
+  if (args.scale) std::printf("  scale                         %.9f\n", model.T_robot_sensor.scale);
+  std::printf("  FRE                           %s mm  (fit residual, not target accuracy: run evaluate)\n",
+              mm(reg.fre_m).c_str());
+  std::printf("  sigma_L                       %s mm  (rigid-body condition over %lld pairs)\n",
+              mm(rb.sigma_l_m).c_str(), static_cast<long long>(rb.pairs));
+  if (sigma_opt) {
+    std::printf("  sigma_opt                     %s mm  (per axis, from repeat readings)\n",
+                mm(*sigma_opt).c_str());
+  }
+  if (sigma_noise) {
+    std::printf("  sigma_noise                   %s mm  (sigma_rep = %s mm%s)\n",
+                mm(*sigma_noise).c_str(), mm(units::mm_to_m(args.sigma_rep_mm.value_or(0.0))).c_str(),
+                args.sigma_rep_mm ? "" : ", not given: use --sigma-rep-mm");
+  }
+  if (rho_value) {
+    std::printf("  rho = sigma_L / sigma_noise   %.2f  %s\n", *rho_value,
+                *rho_value > kRhoThreshold ? "(> 2.5: systematic error dominates, RRBC should help)"
+                                           : "(<= 2.5: noise dominates, RRBC is not expected to help)");
+  }
+  std::printf("  spread (principal axes)       %s mm\n", mm3(reg.spread_m, 1).c_str());
+  if (!rejected.empty()) {
+    std::printf("  rejected as outliers          %zu:", rejected.size());
+    for (const auto& p : rejected) std::printf(" %s", p.c_str());
+    std::printf("\n");
+  }
+  if (!args.output.empty()) std::printf("  model written to %s\n", args.output.c_str());
+}
+
+void add_register_command(CLI::App& app) {
+  auto args = std::make_shared<RegisterArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "register", "register the fiducials of a measurement file (sensor -> robot, paper Eq. 2) "
+                  "and compute their RRBC corrections (Eq. 6)");
+  cmd->add_option("--fiducials", args->fiducials, "measurement CSV; its fiducial rows are used")
+      ->required();
+  cmd->add_option("--config", args->config, "use only rows with this configuration label");
+  cmd->add_flag("--scale", args->scale, "also fit a uniform scale (off in the paper)");
+  cmd->add_flag("--robust", args->robust,
+                "reject gross outliers (swapped markers): residual > 5 robust sigma");
+  cmd->add_option("--sigma-rep-mm", args->sigma_rep_mm,
+                  "robot repeatability in mm, for sigma_noise and rho (UR5 0.1, LWR 4+ 0.05)")
+      ->check(CLI::NonNegativeNumber);
+  args->interpolation.add_to(*cmd);
+  cmd->add_option("-o,--output", args->output, "write the model (JSON) here");
+  cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
+  cmd->callback([args] { run_register(*args); });
+}
+
+}  // namespace
+
+VRREG_REGISTER_COMMAND(10, add_register_command);
+
+}  // namespace vrreg::cli

@@ -1,0 +1,142 @@
+#include "vrreg/correction/correct_targets.hpp"
+
+#include <cmath>
+#include <functional>
+#include <optional>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "vrreg/core/check.hpp"
+#include "vrreg/correction/grid.hpp"
+#include "vrreg/correction/octuplet.hpp"
+#include "vrreg/correction/scattered.hpp"
+
+namespace vrreg {
+namespace {
+
+constexpr Eigen::Index kParallelGrain = 4096;  // targets per task; fewer run serially
+
+void check_inputs(const RegistrationModel& model, const ConstPoints3Ref& targets_sensor_m,
+                  const ConstPoints3Ref& targets_robot_nominal_m,
+                  const InterpolationSettings& settings) {
+  const auto n_fiducials = static_cast<Eigen::Index>(model.fiducials.size());
+  VRREG_THROW_UNLESS(n_fiducials > 0, "the model has no fiducials to correct with");
+  VRREG_THROW_UNLESS(model.corrections_sensor_m.cols() == n_fiducials,
+                     "the model has " << model.corrections_sensor_m.cols()
+                                      << " fiducial corrections for " << n_fiducials
+                                      << " fiducials");
+  VRREG_THROW_UNLESS(model.corrections_sensor_m.allFinite(),
+                     "the model's fiducial corrections are not all finite");
+  const RigidTransform& T = model.T_robot_sensor;
+  VRREG_THROW_UNLESS(T.rotation.allFinite() && T.translation_m.allFinite() &&
+                         std::isfinite(T.scale) && T.scale > 0.0,
+                     "the model's transform is not finite (scale " << T.scale << ")");
+  for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
+    const Location& fiducial = model.fiducials[j];
+    VRREG_THROW_UNLESS(fiducial.has_robot && fiducial.robot_m.allFinite(),
+                       "fiducial " << j << " ('" << fiducial.point
+                                   << "') has no finite nominal robot position");
+  }
+  VRREG_THROW_UNLESS(targets_sensor_m.allFinite(), "the targets' sensor coordinates are not all finite");
+  VRREG_THROW_UNLESS(targets_robot_nominal_m.cols() == 0 ||
+                         targets_robot_nominal_m.cols() == targets_sensor_m.cols(),
+                     "got " << targets_robot_nominal_m.cols() << " nominal robot positions for "
+                            << targets_sensor_m.cols() << " targets");
+  VRREG_THROW_UNLESS(targets_robot_nominal_m.allFinite(),
+                     "the targets' nominal robot coordinates are not all finite");
+  VRREG_THROW_UNLESS(std::isfinite(settings.match_tolerance_m) && settings.match_tolerance_m > 0.0,
+                     "the match tolerance must be > 0, got " << settings.match_tolerance_m << " m");
+}
+
+}  // namespace
+
+TargetCorrection correct_targets(const RegistrationModel& model,
+                                 const ConstPoints3Ref& targets_sensor_m,
+                                 const ConstPoints3Ref& targets_robot_nominal_m,
+                                 const InterpolationSettings& settings) {
+  check_inputs(model, targets_sensor_m, targets_robot_nominal_m, settings);
+  const Eigen::Index n = targets_sensor_m.cols();
+  const double tolerance_m = settings.match_tolerance_m;
+  Points3 fiducials_robot_m(3, static_cast<Eigen::Index>(model.fiducials.size()));
+  for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
+    fiducials_robot_m.col(static_cast<Eigen::Index>(j)) = model.fiducials[j].robot_m;
+  }
+
+  // Build the interpolator once; `stencil_of(i)` then only reads it (safe in parallel).
+  TargetCorrection out;
+  std::optional<GridLayout> grid;
+  std::optional<OctupletStencils> octuplet;
+  std::optional<ScatteredStencils> scattered;
+  InterpolationMethod method = settings.method;
+  if (method == InterpolationMethod::kAuto || method == InterpolationMethod::kGrid) {
+    GridDetection detection = detect_grid(fiducials_robot_m, tolerance_m);
+    VRREG_THROW_UNLESS(detection.grid || method == InterpolationMethod::kAuto,
+                       "grid interpolation needs fiducials on a complete regular grid: "
+                           << detection.reason);
+    if (detection.grid) {
+      grid = std::move(detection.grid);
+      method = InterpolationMethod::kGrid;
+      out.layout = grid->describe();
+    } else {
+      method = InterpolationMethod::kScattered;
+    }
+  }
+  if (method == InterpolationMethod::kOctuplet) {
+    VRREG_THROW_UNLESS(targets_robot_nominal_m.cols() == n,
+                       "octuplet interpolation needs the targets' nominal robot positions");
+    octuplet.emplace(fiducials_robot_m, settings.cube_edge_m, tolerance_m);
+    out.layout = octuplet->describe();
+  } else if (method == InterpolationMethod::kScattered) {
+    scattered.emplace(fiducials_robot_m, tolerance_m);
+    out.layout = scattered->describe();
+  }
+  out.method_used = method;
+
+  const RigidTransform& T_robot_sensor = model.T_robot_sensor;
+  out.stencils.resize(static_cast<std::size_t>(n));
+  out.corrections_sensor_m = Points3::Zero(3, n);
+  out.corrected_sensor_m.resize(3, n);
+  out.corrected_robot_m.resize(3, n);
+  out.uncorrected_robot_m.resize(3, n);
+  const auto correct_range = [&](Eigen::Index begin, Eigen::Index end) {
+    for (Eigen::Index i = begin; i < end; ++i) {
+      const Eigen::Vector3d target_sensor_m = targets_sensor_m.col(i);
+      const Eigen::Vector3d registered_robot_m = T_robot_sensor.apply(target_sensor_m);
+      Stencil stencil;
+      if (grid) {
+        stencil = grid_stencil(*grid, registered_robot_m, tolerance_m);
+      } else if (octuplet) {
+        stencil = octuplet->stencil(targets_robot_nominal_m.col(i));
+      } else {
+        stencil = scattered->stencil(registered_robot_m);
+      }
+      out.uncorrected_robot_m.col(i) = registered_robot_m;
+      if (stencil.status == StencilStatus::kOk) {
+        const Eigen::Vector3d correction_m =  // Eq. 7
+            interpolate_correction(stencil, model.corrections_sensor_m);
+        out.corrections_sensor_m.col(i) = correction_m;
+        out.corrected_sensor_m.col(i) = target_sensor_m + correction_m;  // Eq. 8
+        out.corrected_robot_m.col(i) = T_robot_sensor.apply(Eigen::Vector3d(target_sensor_m + correction_m));
+      } else {
+        out.corrected_sensor_m.col(i) = target_sensor_m;
+        out.corrected_robot_m.col(i) = registered_robot_m;
+      }
+      out.stencils[static_cast<std::size_t>(i)] = stencil;
+    }
+  };
+  if (n < 2 * kParallelGrain) {
+    correct_range(0, n);
+  } else {
+    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, n, kParallelGrain),
+                      [&](const tbb::blocked_range<Eigen::Index>& range) {
+                        correct_range(range.begin(), range.end());
+                      });
+  }
+  for (const Stencil& stencil : out.stencils) {
+    if (stencil.status != StencilStatus::kOk) ++out.n_flagged;
+  }
+  return out;
+}
+
+}  // namespace vrreg

@@ -1,0 +1,120 @@
+#include "vrreg/correction/delaunay.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include <Eigen/SVD>
+
+#include "vrreg/core/check.hpp"
+
+#include <libqhull_r/libqhull_r.h>
+
+namespace vrreg {
+namespace {
+
+/// Collects qhull's messages in memory (the library never writes to files or the console).
+class MessageBuffer {
+ public:
+  MessageBuffer() : file_(open_memstream(&data_, &size_)) {}
+  ~MessageBuffer() {
+    if (file_ != nullptr) std::fclose(file_);
+    std::free(data_);
+  }
+  MessageBuffer(const MessageBuffer&) = delete;
+  MessageBuffer& operator=(const MessageBuffer&) = delete;
+  [[nodiscard]] FILE* file() const { return file_; }
+  /// The first line written so far.
+  [[nodiscard]] std::string first_line() {
+    if (file_ == nullptr) return "qhull failed";
+    std::fflush(file_);
+    std::string text(data_ == nullptr ? "" : data_, size_);
+    const auto start = text.find_first_not_of(" \n");
+    if (start == std::string::npos) return "qhull failed";
+    return text.substr(start, text.find('\n', start) - start);
+  }
+
+ private:
+  char* data_ = nullptr;
+  std::size_t size_ = 0;
+  FILE* file_ = nullptr;
+};
+
+/// Owns a qhull instance and frees all of its memory.
+class Qhull {
+ public:
+  explicit Qhull(FILE* errfile) : qh_(std::make_unique<qhT>()) { qh_zero(qh_.get(), errfile); }
+  ~Qhull() {
+    int curlong = 0;
+    int totlong = 0;
+    qh_freeqhull(qh_.get(), !qh_ALL);
+    qh_memfreeshort(qh_.get(), &curlong, &totlong);
+  }
+  Qhull(const Qhull&) = delete;
+  Qhull& operator=(const Qhull&) = delete;
+  [[nodiscard]] qhT* get() const { return qh_.get(); }
+
+ private:
+  std::unique_ptr<qhT> qh_;
+};
+
+}  // namespace
+
+Tetrahedralization delaunay_tetrahedralization(const ConstPoints3Ref& points_m) {
+  const Eigen::Index n = points_m.cols();
+  VRREG_THROW_UNLESS(n >= 4, "a Delaunay tetrahedralization needs at least 4 fiducials, got " << n);
+  VRREG_THROW_UNLESS(points_m.allFinite(), "Delaunay tetrahedralization: non-finite coordinates");
+  const Eigen::Vector3d centroid_m = points_m.rowwise().mean();
+  const Points3 centred_m = points_m.colwise() - centroid_m;
+  const Eigen::Vector3d singular =
+      Eigen::JacobiSVD<Eigen::Matrix3d>(centred_m * centred_m.transpose()).singularValues();
+  VRREG_THROW_UNLESS(singular(2) > 1e-18 * singular(0) && singular(0) > 0.0,
+                     "the " << n << " fiducials are coplanar (or collinear): scattered "
+                            << "interpolation needs fiducials that span a volume");
+
+  // qhull keeps pointers into the coordinates: they live until the Qhull object is gone.
+  std::vector<coordT> coords(points_m.data(), points_m.data() + 3 * n);
+  MessageBuffer messages;
+  Qhull qhull(messages.file());
+  qhT* qh = qhull.get();
+  char options[] = "qhull d Qbb Qc Qz Q12 Qt";
+  const int exitcode = qh_new_qhull(qh, 3, static_cast<int>(n), coords.data(), False, options,
+                                    nullptr, messages.file());
+  VRREG_THROW_UNLESS(exitcode == 0, "Delaunay tetrahedralization of " << n << " fiducials failed: "
+                                                                       << messages.first_line());
+
+  std::vector<Eigen::Index> tet_of_facet(static_cast<std::size_t>(qh->facet_id) + 1, -1);
+  Tetrahedralization out;
+  facetT* facet = nullptr;
+  FORALLfacets {
+    if (facet->upperdelaunay || qh_setsize(qh, facet->vertices) != 4) continue;
+    std::array<Eigen::Index, 4> vertices{};
+    bool valid = true;
+    for (int k = 0; k < 4; ++k) {
+      const auto* vertex = static_cast<vertexT*>(SETelem_(facet->vertices, k));
+      const int id = qh_pointid(qh, vertex->point);
+      valid = valid && id >= 0 && id < n;
+      vertices[static_cast<std::size_t>(k)] = id;
+    }
+    if (!valid) continue;
+    tet_of_facet[facet->id] = static_cast<Eigen::Index>(out.vertices.size());
+    out.vertices.push_back(vertices);
+  }
+  out.neighbours.resize(out.vertices.size());
+  FORALLfacets {
+    const Eigen::Index tet = tet_of_facet[facet->id];
+    if (tet < 0) continue;
+    // Simplicial facets ('Qt'): neighbour k is opposite vertex k.
+    for (int k = 0; k < 4; ++k) {
+      const auto* neighbour = static_cast<facetT*>(SETelem_(facet->neighbors, k));
+      out.neighbours[static_cast<std::size_t>(tet)][static_cast<std::size_t>(k)] =
+          neighbour == nullptr ? -1 : tet_of_facet[neighbour->id];
+    }
+  }
+  VRREG_THROW_UNLESS(!out.vertices.empty(), "Delaunay tetrahedralization of "
+                                                << n << " fiducials gave no tetrahedra");
+  return out;
+}
+
+}  // namespace vrreg

@@ -1,0 +1,66 @@
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "vrreg/core/units.hpp"
+#include "vrreg/correction/grid.hpp"
+
+namespace vrreg {
+namespace {
+
+std::string ordinal(int n) {
+  if (n % 100 >= 11 && n % 100 <= 13) return std::to_string(n) + "th";
+  switch (n % 10) {
+    case 1: return std::to_string(n) + "st";
+    case 2: return std::to_string(n) + "nd";
+    case 3: return std::to_string(n) + "rd";
+    default: return std::to_string(n) + "th";
+  }
+}
+
+}  // namespace
+
+std::string GridLayout::describe() const {
+  std::ostringstream out;
+  out << "grid " << nodes[0] << " x " << nodes[1] << " x " << nodes[2] << " nodes, "
+      << units::m_to_mm(spacing_m.x()) << " x " << units::m_to_mm(spacing_m.y()) << " x "
+      << units::m_to_mm(spacing_m.z()) << " mm";
+  if (stride > 1) {
+    out << " (every " << ordinal(stride) << " fiducial; " << fiducial.size() << " of "
+        << n_fiducials << " fiducials)";
+  }
+  return out.str();
+}
+
+Stencil grid_stencil(const GridLayout& grid, const Eigen::Vector3d& point_robot_m,
+                     double tolerance_m) {
+  std::array<int, 3> cell{};
+  std::array<double, 3> fraction{};
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto a = static_cast<std::size_t>(axis);
+    const double last = grid.nodes[a] - 1;
+    const double t = (point_robot_m(axis) - grid.origin_m(axis)) / grid.spacing_m(axis);
+    const double slack = tolerance_m / grid.spacing_m(axis);
+    if (!(t >= -slack && t <= last + slack)) {  // also catches NaN
+      return Stencil{.fiducial = {}, .weight = {}, .size = 0,
+                     .status = StencilStatus::kOutsideGrid};
+    }
+    const double clamped = std::clamp(t, 0.0, last);
+    cell[a] = std::min(static_cast<int>(std::floor(clamped)), grid.nodes[a] - 2);
+    fraction[a] = clamped - cell[a];
+  }
+  Stencil out;
+  out.size = 8;
+  for (std::size_t corner = 0; corner < 8; ++corner) {
+    const int bx = static_cast<int>(corner & 1U);
+    const int by = static_cast<int>((corner >> 1U) & 1U);
+    const int bz = static_cast<int>((corner >> 2U) & 1U);
+    out.fiducial[corner] = grid.node_fiducial(cell[0] + bx, cell[1] + by, cell[2] + bz);
+    out.weight[corner] = (bx != 0 ? fraction[0] : 1.0 - fraction[0]) *
+                         (by != 0 ? fraction[1] : 1.0 - fraction[1]) *
+                         (bz != 0 ? fraction[2] : 1.0 - fraction[2]);
+  }
+  return out;
+}
+
+}  // namespace vrreg

@@ -1,0 +1,102 @@
+#include "location_accumulator.hpp"
+
+#include <cmath>
+
+#include "csv_fields.hpp"
+#include "text_checks.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/io/file_error.hpp"
+
+namespace vrreg::io::detail {
+namespace {
+
+const char* role_name(Role role) { return role == Role::kFiducial ? "fiducial" : "target"; }
+
+std::string mm_text(const Eigen::Vector3d& p_m) {
+  return "(" + format_double(units::m_to_mm(p_m.x())) + ", " +
+         format_double(units::m_to_mm(p_m.y())) + ", " + format_double(units::m_to_mm(p_m.z())) +
+         ") mm";
+}
+
+std::string location_name(const std::string& point, const std::optional<int>& config) {
+  std::string name = "point '" + printable(point) + "'";
+  if (config) name += " config " + std::to_string(*config);
+  return name;
+}
+
+}  // namespace
+
+LocationAccumulator::LocationAccumulator(std::string source, bool has_robot,
+                                         double robot_tolerance_m, double joint_tolerance_rad)
+    : source_(std::move(source)),
+      has_robot_(has_robot),
+      robot_tolerance_m_(robot_tolerance_m),
+      joint_tolerance_rad_(joint_tolerance_rad) {}
+
+void LocationAccumulator::check_point(const PointEntry& entry, const MeasurementRow& row,
+                                      std::size_t line) const {
+  if (entry.role != row.role) {
+    throw FileError(source_, line,
+                    location_name(key_, std::nullopt) + " has role " + role_name(row.role) +
+                        " here but " + role_name(entry.role) + " on line " +
+                        std::to_string(entry.first_line));
+  }
+  if (has_robot_ && (row.robot_m - entry.robot_m).cwiseAbs().maxCoeff() > robot_tolerance_m_) {
+    throw FileError(source_, line,
+                    location_name(key_, std::nullopt) + " has robot position " +
+                        mm_text(row.robot_m) + " here but " + mm_text(entry.robot_m) + " on line " +
+                        std::to_string(entry.first_line));
+  }
+}
+
+void LocationAccumulator::check_joints(const Location& location, const MeasurementRow& row,
+                                       std::size_t line) const {
+  for (std::size_t k = 0; k < row.q_rad.size(); ++k) {
+    if (std::abs(row.q_rad[k] - location.q_rad[k]) > joint_tolerance_rad_) {
+      throw FileError(source_, line,
+                      location_name(key_, row.config) + " has q" + std::to_string(k + 1) + " = " +
+                          format_double(row.q_rad[k]) + " rad here but " +
+                          format_double(location.q_rad[k]) + " rad on line " +
+                          std::to_string(location.source_line));
+    }
+  }
+}
+
+void LocationAccumulator::add(const MeasurementRow& row, std::size_t line) {
+  ++rows_;
+  key_.assign(row.point);
+  auto [it, new_point] = points_.try_emplace(key_);
+  PointEntry& entry = it->second;
+  if (new_point) {
+    entry.role = row.role;
+    entry.robot_m = row.robot_m;
+    entry.first_line = line;
+  } else {
+    check_point(entry, row, line);
+  }
+  std::size_t index = locations_.size();
+  for (const auto& [config, location_index] : entry.locations) {
+    if (config == row.config) index = location_index;
+  }
+  if (index == locations_.size()) {
+    entry.locations.emplace_back(row.config, index);
+    Location& location = locations_.emplace_back();
+    location.point = key_;
+    location.role = row.role;
+    location.config = row.config;
+    location.has_robot = has_robot_;
+    location.robot_m = row.robot_m;
+    location.q_rad = row.q_rad;
+    location.source_line = line;
+  } else {
+    check_joints(locations_[index], row, line);
+  }
+  // Welford: running mean and per-axis sum of squared deviations from it.
+  Location& location = locations_[index];
+  location.n_readings += 1;
+  const Eigen::Vector3d delta = row.sensor_m - location.sensor_m;
+  location.sensor_m += delta / static_cast<double>(location.n_readings);
+  location.sensor_sq_dev_m2 += delta.cwiseProduct(row.sensor_m - location.sensor_m);
+}
+
+}  // namespace vrreg::io::detail

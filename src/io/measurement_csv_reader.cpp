@@ -1,0 +1,79 @@
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+#include "csv_fields.hpp"
+#include "line_reader.hpp"
+#include "location_accumulator.hpp"
+#include "measurement_header.hpp"
+#include "measurement_row.hpp"
+#include "vrreg/io/file_error.hpp"
+#include "vrreg/io/measurement_csv.hpp"
+
+namespace vrreg::io {
+namespace {
+
+// Blank lines, comment lines and rows of empty fields (spreadsheet exports) carry no data.
+bool is_blank(const std::vector<std::string_view>& fields) {
+  for (const std::string_view field : fields) {
+    if (!field.empty()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source_name,
+                                     const CsvReadOptions& options) {
+  detail::LineReader reader(in, source_name, options.max_line_bytes);
+  std::string line;
+  std::vector<std::string_view> fields;
+  std::optional<detail::MeasurementColumns> columns;
+  std::optional<detail::LocationAccumulator> accumulator;
+  std::size_t header_line = 0;
+  detail::MeasurementRow row;
+  while (reader.next(line)) {
+    const std::string_view content = detail::trim(line);
+    if (content.empty() || content.front() == '#') continue;
+    detail::split_fields(line, fields);
+    if (is_blank(fields)) continue;
+    if (!columns) {
+      header_line = reader.line_number();
+      columns =
+          detail::parse_measurement_header(fields, source_name, header_line, options.require_robot);
+      accumulator.emplace(source_name, columns->has_robot(), options.robot_tolerance_m,
+                          options.joint_tolerance_rad);
+      continue;
+    }
+    detail::parse_measurement_row(fields, *columns, source_name, reader.line_number(), row);
+    accumulator->add(row, reader.line_number());
+  }
+  if (!columns) {
+    throw FileError(source_name, 0,
+                    reader.line_number() == 0
+                        ? "empty file (expected a header line and data rows)"
+                        : "no header line (the file holds only comments or blank lines)");
+  }
+  if (accumulator->rows() == 0) {
+    throw FileError(source_name, header_line, "header only: the file has no data rows");
+  }
+  MeasurementSet set;
+  set.source = source_name;
+  set.locations = accumulator->take();
+  set.n_joints = static_cast<int>(columns->joints.size());
+  set.has_config = columns->config != detail::MeasurementColumns::kAbsent;
+  set.has_repeat = columns->repeat != detail::MeasurementColumns::kAbsent;
+  return set;
+}
+
+MeasurementSet read_measurement_csv(const std::string& path, const CsvReadOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw FileError(path, 0, "is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  return parse_measurement_csv(in, path, options);
+}
+
+}  // namespace vrreg::io

@@ -1,0 +1,32 @@
+#pragma once
+// The header line of a measurement CSV: which field holds which quantity, in which unit.
+#include <array>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vrreg::io::detail {
+
+/// Column positions (indices into a row's fields) and unit factors of a measurement CSV.
+struct MeasurementColumns {
+  static constexpr int kAbsent = -1;
+  std::vector<std::string> names;  ///< header names as written (trimmed)
+  int point = kAbsent;
+  int role = kAbsent;
+  std::array<int, 3> robot{kAbsent, kAbsent, kAbsent};
+  std::array<int, 3> sensor{kAbsent, kAbsent, kAbsent};
+  int config = kAbsent;
+  int repeat = kAbsent;
+  std::vector<int> joints;   ///< q1..qN
+  bool length_in_mm = true;  ///< _mm columns (else _m)
+  bool joints_in_degrees = false;
+  [[nodiscard]] bool has_robot() const { return robot[0] != kAbsent; }
+};
+
+/// Parses header `fields` (line `line` of `source`); throws FileError on any problem.
+MeasurementColumns parse_measurement_header(const std::vector<std::string_view>& fields,
+                                            const std::string& source, std::size_t line,
+                                            bool require_robot);
+
+}  // namespace vrreg::io::detail

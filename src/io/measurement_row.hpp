@@ -1,0 +1,30 @@
+#pragma once
+// One data row of a measurement CSV, parsed and converted to SI units.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "measurement_header.hpp"
+#include "vrreg/core/measurement.hpp"
+
+namespace vrreg::io::detail {
+
+/// A reading as it appears on one row, in metres and radians; `point` views the line buffer.
+struct MeasurementRow {
+  std::string_view point;
+  Role role = Role::kFiducial;
+  Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();
+  std::optional<int> config;
+  std::vector<double> q_rad;
+  std::optional<int> repeat;
+};
+
+/// Parses the trimmed `fields` of line `line` into `row`; throws FileError on any bad value.
+void parse_measurement_row(const std::vector<std::string_view>& fields,
+                           const MeasurementColumns& columns, const std::string& source,
+                           std::size_t line, MeasurementRow& row);
+
+}  // namespace vrreg::io::detail

@@ -1,0 +1,172 @@
+#include <Eigen/LU>
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "json_fields.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/io/file_error.hpp"
+#include "vrreg/io/model_json.hpp"
+
+namespace vrreg::io {
+namespace {
+
+using nlohmann::json;
+constexpr double kMmPerM = units::kMillimetresPerMetre;
+constexpr double kRotationTolerance = 1e-9;
+
+// nlohmann's message without its "[json.exception...] parse error at line L, column C: " prefix.
+std::string parse_error_detail(const std::string& what) {
+  std::string detail = what;
+  const std::size_t bracket = detail.find("] ");
+  if (bracket != std::string::npos) detail.erase(0, bracket + 2);
+  const std::size_t colon = detail.find(": ");
+  if (detail.starts_with("parse error") && colon != std::string::npos) detail.erase(0, colon + 2);
+  return detail;
+}
+
+// 1-based line of the byte at 1-based offset `byte` of `text`.
+std::size_t line_of_byte(const std::string& text, std::size_t byte) {
+  const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
+  return 1 + static_cast<std::size_t>(
+                 std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
+}
+
+json parse_document(const std::string& text, const std::string& source) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+    throw FileError(source, 0, "empty file (expected a vrreg model in JSON)");
+  }
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw FileError(
+        source, line_of_byte(text, e.byte),
+        "invalid JSON (truncated or corrupted model file): " + parse_error_detail(e.what()));
+  } catch (const json::exception& e) {
+    throw FileError(source, 0, "invalid JSON: " + parse_error_detail(e.what()));
+  }
+}
+
+void check_header(const json& doc, const detail::JsonFields& f, const std::string& source) {
+  f.require_object(doc, "");
+  const json& format = f.member(doc, "", "format");
+  if (!format.is_string() || format.get<std::string>() != "vrreg-model") {
+    throw FileError(
+        source, 0,
+        "not a vrreg model file (\"format\" is " + format.dump() + ", expected \"vrreg-model\")");
+  }
+  const json& version = f.member(doc, "", "version");
+  if (!version.is_number_integer() ||
+      version.get<std::int64_t>() != RegistrationModel::kFormatVersion) {
+    throw FileError(source, 0,
+                    "unsupported model version " + version.dump() + "; this vrreg reads version " +
+                        std::to_string(RegistrationModel::kFormatVersion));
+  }
+  const json& units = f.member(doc, "", "units");
+  if (f.string(units, "units", "length") != "mm") f.fail("units.length", "expected \"mm\"");
+  if (f.string(units, "units", "angle") != "rad") f.fail("units.angle", "expected \"rad\"");
+}
+
+Eigen::Matrix3d read_rotation(const json& doc, const detail::JsonFields& f) {
+  const json& rows = f.member(doc, "", "rotation");
+  if (!rows.is_array() || rows.size() != 3) f.fail("rotation", "expected 3 rows of 3 numbers");
+  Eigen::Matrix3d R;
+  for (int r = 0; r < 3; ++r) {
+    const std::vector<double> row = f.array_of_numbers(rows[static_cast<std::size_t>(r)],
+                                                       "rotation[" + std::to_string(r) + "]", 3);
+    for (int c = 0; c < 3; ++c) R(r, c) = row[static_cast<std::size_t>(c)];
+  }
+  const double orthogonality =
+      (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  const double det = R.determinant();
+  if (orthogonality > kRotationTolerance || det < 0.0) {
+    std::ostringstream message;
+    message << "not a proper rotation (max |R'R - I| = " << orthogonality << ", det = " << det
+            << ")";
+    f.fail("rotation", message.str());
+  }
+  return R;
+}
+
+Location read_fiducial(const json& item, const std::string& path, const detail::JsonFields& f,
+                       Eigen::Vector3d& correction_m) {
+  Location loc;
+  loc.role = Role::kFiducial;
+  loc.has_robot = true;
+  loc.point = f.string(item, path, "point");
+  if (loc.point.empty()) f.fail(detail::join_path(path, "point"), "empty point label");
+  loc.config = f.optional_integer(item, path, "config");
+  loc.robot_m = f.vector3(item, path, "robot_mm", kMmPerM);
+  loc.sensor_m = f.vector3(item, path, "sensor_mm", kMmPerM);
+  loc.n_readings = f.integer(item, path, "n_readings");
+  if (loc.n_readings < 1) f.fail(detail::join_path(path, "n_readings"), "must be at least 1");
+  loc.sensor_sq_dev_m2 = f.vector3(item, path, "sensor_sq_dev_mm2", kMmPerM * kMmPerM);
+  if (loc.sensor_sq_dev_m2.minCoeff() < 0.0)
+    f.fail(detail::join_path(path, "sensor_sq_dev_mm2"), "negative");
+  if (item.contains("q_rad")) loc.q_rad = f.numbers(item, path, "q_rad", -1);
+  correction_m = f.vector3(item, path, "correction_mm", kMmPerM);
+  return loc;
+}
+
+}  // namespace
+
+RegistrationModel parse_model_json(const std::string& text, const std::string& source) {
+  const json doc = parse_document(text, source);
+  const detail::JsonFields f(source);
+  check_header(doc, f, source);
+  RegistrationModel model;
+  model.T_robot_sensor.rotation = read_rotation(doc, f);
+  model.T_robot_sensor.translation_m = f.vector3(doc, "", "translation_mm", kMmPerM);
+  model.T_robot_sensor.scale = f.number(doc, "", "scale");
+  if (model.T_robot_sensor.scale <= 0.0) f.fail("scale", "must be positive");
+  model.fre_m = f.number(doc, "", "fre_mm") / kMmPerM;
+  model.sigma_l_m = f.number(doc, "", "sigma_l_mm") / kMmPerM;
+  if (model.fre_m < 0.0) f.fail("fre_mm", "negative");
+  if (model.sigma_l_m < 0.0) f.fail("sigma_l_mm", "negative");
+  model.config = f.optional_integer(doc, "", "config");
+  model.source = f.string(doc, "", "source");
+  const json& interp = f.member(doc, "", "interpolation");
+  const std::string method = f.string(interp, "interpolation", "method");
+  try {
+    model.interpolation.method = parse_interpolation_method(method);
+  } catch (const InputError& e) {
+    f.fail("interpolation.method", e.what());
+  }
+  model.interpolation.cube_edge_m = f.number(interp, "interpolation", "cube_mm") / kMmPerM;
+  model.interpolation.match_tolerance_m =
+      f.number(interp, "interpolation", "match_tolerance_mm") / kMmPerM;
+  if (model.interpolation.cube_edge_m < 0.0) f.fail("interpolation.cube_mm", "negative");
+  if (model.interpolation.match_tolerance_m < 0.0) {
+    f.fail("interpolation.match_tolerance_mm", "negative");
+  }
+  const json& fiducials = f.member(doc, "", "fiducials");
+  if (!fiducials.is_array())
+    f.fail("fiducials", std::string("expected an array, found ") + fiducials.type_name());
+  model.fiducials.reserve(fiducials.size());
+  model.corrections_sensor_m.resize(3, static_cast<Eigen::Index>(fiducials.size()));
+  for (std::size_t j = 0; j < fiducials.size(); ++j) {
+    Eigen::Vector3d correction_m;
+    model.fiducials.push_back(
+        read_fiducial(fiducials[j], "fiducials[" + std::to_string(j) + "]", f, correction_m));
+    model.corrections_sensor_m.col(static_cast<Eigen::Index>(j)) = correction_m;
+  }
+  return model;
+}
+
+RegistrationModel read_model_json(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw FileError(path, 0, "is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (in.bad()) throw FileError(path, 0, "read error");
+  return parse_model_json(content.str(), path);
+}
+
+}  // namespace vrreg::io

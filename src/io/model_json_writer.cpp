@@ -1,0 +1,100 @@
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/io/atomic_write.hpp"
+#include "vrreg/io/model_json.hpp"
+
+namespace vrreg::io {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+double finite(double value, const char* key) {
+  VRREG_THROW_UNLESS(std::isfinite(value), "model: " << key << " is not finite (" << value << ")");
+  return value;
+}
+
+json mm_array(const Eigen::Vector3d& v_m, const char* key) {
+  json out = json::array();
+  for (int axis = 0; axis < 3; ++axis) out.push_back(finite(units::m_to_mm(v_m(axis)), key));
+  return out;
+}
+
+json mm2_array(const Eigen::Vector3d& v_m2, const char* key) {
+  json out = json::array();
+  for (int axis = 0; axis < 3; ++axis) {
+    out.push_back(
+        finite(v_m2(axis) * units::kMillimetresPerMetre * units::kMillimetresPerMetre, key));
+  }
+  return out;
+}
+
+json optional_int(const std::optional<int>& value) { return value ? json(*value) : json(nullptr); }
+
+json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m) {
+  json out = json::object();
+  out["point"] = f.point;
+  out["config"] = optional_int(f.config);
+  out["robot_mm"] = mm_array(f.robot_m, "fiducial robot_mm");
+  out["sensor_mm"] = mm_array(f.sensor_m, "fiducial sensor_mm");
+  out["n_readings"] = f.n_readings;
+  out["sensor_sq_dev_mm2"] = mm2_array(f.sensor_sq_dev_m2, "fiducial sensor_sq_dev_mm2");
+  if (!f.q_rad.empty()) {
+    json q = json::array();
+    for (const double v : f.q_rad) q.push_back(finite(v, "fiducial q_rad"));
+    out["q_rad"] = std::move(q);
+  }
+  out["correction_mm"] = mm_array(correction_m, "fiducial correction_mm");
+  return out;
+}
+
+}  // namespace
+
+std::string format_model_json(const RegistrationModel& model) {
+  VRREG_THROW_UNLESS(
+      model.corrections_sensor_m.cols() == static_cast<Eigen::Index>(model.fiducials.size()),
+      "model: " << model.corrections_sensor_m.cols() << " corrections for "
+                << model.fiducials.size() << " fiducials");
+  const RigidTransform& T = model.T_robot_sensor;
+  json out = json::object();
+  out["format"] = "vrreg-model";
+  out["version"] = RegistrationModel::kFormatVersion;
+  out["units"] = {{"length", "mm"}, {"angle", "rad"}};
+  json rotation = json::array();
+  for (int r = 0; r < 3; ++r) {
+    json row = json::array();
+    for (int c = 0; c < 3; ++c) row.push_back(finite(T.rotation(r, c), "rotation"));
+    rotation.push_back(std::move(row));
+  }
+  out["rotation"] = std::move(rotation);
+  out["translation_mm"] = mm_array(T.translation_m, "translation_mm");
+  out["scale"] = finite(T.scale, "scale");
+  out["fre_mm"] = finite(units::m_to_mm(model.fre_m), "fre_mm");
+  out["sigma_l_mm"] = finite(units::m_to_mm(model.sigma_l_m), "sigma_l_mm");
+  out["config"] = optional_int(model.config);
+  out["source"] = model.source;
+  out["interpolation"] = {
+      {"method", to_string(model.interpolation.method)},
+      {"cube_mm", finite(units::m_to_mm(model.interpolation.cube_edge_m), "cube_mm")},
+      {"match_tolerance_mm",
+       finite(units::m_to_mm(model.interpolation.match_tolerance_m), "match_tolerance_mm")}};
+  json fiducials = json::array();
+  for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
+    fiducials.push_back(fiducial_json(
+        model.fiducials[j], model.corrections_sensor_m.col(static_cast<Eigen::Index>(j))));
+  }
+  out["fiducials"] = std::move(fiducials);
+  try {
+    return out.dump(2) + "\n";
+  } catch (const json::type_error& e) {  // invalid UTF-8 in a label or the source name
+    VRREG_THROW_UNLESS(false, "model: cannot write as JSON: " << e.what());
+  }
+}
+
+void write_model_json(const std::string& path, const RegistrationModel& model) {
+  write_file_atomically(path, format_model_json(model));
+}
+
+}  // namespace vrreg::io

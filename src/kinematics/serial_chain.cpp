@@ -1,0 +1,147 @@
+#include "vrreg/kinematics/serial_chain.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "vrreg/core/check.hpp"
+#include "vrreg/kinematics/pose.hpp"
+
+namespace vrreg::kinematics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+bool is_identity(const Eigen::Isometry3d& t) {
+  return t.matrix() == Eigen::Matrix4d::Identity();
+}
+
+bool near(double value, double expected, double tolerance) {
+  return std::abs(value - expected) <= tolerance;
+}
+
+bool angle_near(double value_rad, double expected_rad, double tolerance) {
+  return std::abs(wrap_angle(value_rad - expected_rad)) <= tolerance;
+}
+
+bool has_ur_structure(const std::vector<DhRow>& rows, double tol) {
+  if (rows.size() != 6) return false;
+  const double alpha[6] = {kPi / 2, 0.0, 0.0, kPi / 2, -kPi / 2, 0.0};
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (!angle_near(rows[i].alpha_rad, alpha[i], tol)) return false;
+  }
+  return near(rows[0].a_m, 0.0, tol) && near(rows[3].a_m, 0.0, tol) &&
+         near(rows[4].a_m, 0.0, tol) && near(rows[5].a_m, 0.0, tol) &&
+         !near(rows[1].a_m, 0.0, tol) && !near(rows[2].a_m, 0.0, tol);
+}
+
+bool has_lwr_structure(const std::vector<DhRow>& rows, double tol) {
+  if (rows.size() != 7) return false;
+  const double alpha[7] = {kPi / 2, -kPi / 2, -kPi / 2, kPi / 2, kPi / 2, -kPi / 2, 0.0};
+  for (std::size_t i = 0; i < 7; ++i) {
+    if (!angle_near(rows[i].alpha_rad, alpha[i], tol) || !near(rows[i].a_m, 0.0, tol)) {
+      return false;
+    }
+  }
+  return near(rows[1].d_m, 0.0, tol) && near(rows[3].d_m, 0.0, tol) &&
+         near(rows[5].d_m, 0.0, tol) && !near(rows[2].d_m, 0.0, tol) &&
+         !near(rows[4].d_m, 0.0, tol);
+}
+
+}  // namespace
+
+const char* to_string(ChainFamily family) {
+  switch (family) {
+    case ChainFamily::kUr:
+      return "ur";
+    case ChainFamily::kLwr:
+      return "lwr";
+    case ChainFamily::kGeneric:
+      break;
+  }
+  return "generic";
+}
+
+ChainFamily detect_family(const std::vector<DhRow>& rows, double tolerance) {
+  if (has_ur_structure(rows, tolerance)) return ChainFamily::kUr;
+  if (has_lwr_structure(rows, tolerance)) return ChainFamily::kLwr;
+  return ChainFamily::kGeneric;
+}
+
+SerialChain::SerialChain(std::string name, std::vector<DhRow> rows,
+                         std::vector<JointLimits> limits, const Eigen::Isometry3d& T_base_dh0,
+                         const Eigen::Isometry3d& T_flange_tcp)
+    : name_(std::move(name)),
+      rows_(std::move(rows)),
+      limits_(std::move(limits)),
+      T_base_dh0_(T_base_dh0),
+      T_flange_tcp_(T_flange_tcp) {
+  VRREG_THROW_UNLESS(!rows_.empty() && rows_.size() <= static_cast<std::size_t>(kMaxJoints),
+                     "robot '" << name_ << "': a chain needs 1 to " << kMaxJoints
+                               << " joints, got " << rows_.size());
+  VRREG_THROW_UNLESS(limits_.size() == rows_.size(),
+                     "robot '" << name_ << "': " << rows_.size() << " DH rows but "
+                               << limits_.size() << " joint limits");
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    const DhRow& r = rows_[i];
+    VRREG_THROW_UNLESS(std::isfinite(r.a_m) && std::isfinite(r.alpha_rad) &&
+                           std::isfinite(r.d_m) && std::isfinite(r.theta_offset_rad),
+                       "robot '" << name_ << "': DH row " << i + 1 << " has a non-finite value (a="
+                                 << r.a_m << ", alpha=" << r.alpha_rad << ", d=" << r.d_m
+                                 << ", theta_offset=" << r.theta_offset_rad << ")");
+    const JointLimits& l = limits_[i];
+    VRREG_THROW_UNLESS(std::isfinite(l.lower_rad) && std::isfinite(l.upper_rad) &&
+                           l.lower_rad < l.upper_rad,
+                       "robot '" << name_ << "': joint " << i + 1
+                                 << " limits must be finite with lower < upper, got ["
+                                 << l.lower_rad << ", " << l.upper_rad << "] rad");
+  }
+  const std::string base_what = "robot '" + name_ + "' base transform";
+  const std::string tool_what = "robot '" + name_ + "' tool transform";
+  check_pose(T_base_dh0_, base_what.c_str());
+  check_pose(T_flange_tcp_, tool_what.c_str());
+  T_dh0_base_ = T_base_dh0_.inverse(Eigen::Isometry);
+  T_tcp_flange_ = T_flange_tcp_.inverse(Eigen::Isometry);
+  plain_ = is_identity(T_base_dh0_) && is_identity(T_flange_tcp_);
+  family_ = detect_family(rows_);
+}
+
+SerialChain SerialChain::with_tool(const Eigen::Isometry3d& T_flange_tcp) const {
+  return SerialChain(name_, rows_, limits_, T_base_dh0_, T_flange_tcp);
+}
+
+SerialChain SerialChain::with_base(const Eigen::Isometry3d& T_base_dh0) const {
+  return SerialChain(name_, rows_, limits_, T_base_dh0, T_flange_tcp_);
+}
+
+SerialChain SerialChain::with_name(std::string name) const {
+  return SerialChain(std::move(name), rows_, limits_, T_base_dh0_, T_flange_tcp_);
+}
+
+Eigen::Isometry3d SerialChain::dh0_flange_from_base_tcp(const Eigen::Isometry3d& T_base_tcp) const {
+  if (plain_) return T_base_tcp;
+  return T_dh0_base_ * T_base_tcp * T_tcp_flange_;
+}
+
+bool SerialChain::within_limits(const JointRef& q_rad, double tolerance_rad) const {
+  if (q_rad.size() != n_joints()) return false;
+  for (int i = 0; i < n_joints(); ++i) {
+    const JointLimits& l = limit(i);
+    if (!(q_rad(i) >= l.lower_rad - tolerance_rad && q_rad(i) <= l.upper_rad + tolerance_rad)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void SerialChain::check_joints(const JointRef& q_rad, const char* what) const {
+  VRREG_THROW_UNLESS(q_rad.size() == n_joints(), what << ": robot '" << name_ << "' has "
+                                                      << n_joints() << " joints, got "
+                                                      << q_rad.size() << " joint values");
+  for (Eigen::Index i = 0; i < q_rad.size(); ++i) {
+    VRREG_THROW_UNLESS(std::isfinite(q_rad(i)),
+                       what << ": joint " << i + 1 << " is not finite (" << q_rad(i) << ")");
+  }
+}
+
+}  // namespace vrreg::kinematics

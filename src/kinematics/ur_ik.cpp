@@ -1,0 +1,271 @@
+// Closed-form UR inverse kinematics (after Hawkins 2013, re-derived for this code):
+//   wrist centre o5 = p - d6 z6; z1 . o5 = d4 fixes q1 (2 branches);
+//   z1 in the flange frame is (s5 c6, -s5 s6, c5), which fixes q5 (2 branches) and q6;
+//   o4 = o5 + d5 (s6 x6 + c6 y6) and x4 give the planar 3R problem in frame 1: q3 by the law of
+//   cosines (2 branches), then q2 and q4 = q234 - q2 - q3.
+// Later joints are computed from the earlier ones as computed, so rounding does not accumulate.
+#include "vrreg/kinematics/ur_ik.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "limits_fit.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/kinematics/pose.hpp"
+
+namespace vrreg::kinematics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct UrGeometry {
+  double d1, a2, a3, d4, d5, d6;
+  double offset[6];
+};
+
+UrGeometry ur_geometry(const SerialChain& chain, const char* what) {
+  VRREG_THROW_UNLESS(chain.family() == ChainFamily::kUr,
+                     what << ": robot '" << chain.name()
+                          << "' does not have the UR structure (6 joints, alpha = [90, 0, 0, 90, "
+                             "-90, 0] deg, a1 = a4 = a5 = a6 = 0); its family is "
+                          << to_string(chain.family()));
+  UrGeometry g{};
+  g.d1 = chain.row(0).d_m;
+  g.a2 = chain.row(1).a_m;
+  g.a3 = chain.row(2).a_m;
+  g.d4 = chain.row(1).d_m + chain.row(2).d_m + chain.row(3).d_m;  // parallel axes: offsets add
+  g.d5 = chain.row(4).d_m;
+  g.d6 = chain.row(5).d_m;
+  for (int i = 0; i < 6; ++i) g.offset[i] = chain.row(i).theta_offset_rad;
+  return g;
+}
+
+// Angle of vector u minus angle of vector v, as one atan2.
+double angle_difference(double ux, double uy, double vx, double vy) {
+  return std::atan2(vx * uy - vy * ux, vx * ux + vy * uy);
+}
+
+struct Branch {
+  double theta[6];
+  bool shoulder_left, elbow_up, wrist_flipped;
+  std::uint8_t singular;
+};
+
+std::string mm(double m) {
+  std::ostringstream s;
+  s.precision(6);
+  s << units::m_to_mm(m) << " mm";
+  return s.str();
+}
+
+}  // namespace
+
+IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T_base_tcp,
+                               const IkOptions& options) {
+  const UrGeometry g = ur_geometry(chain, "UR inverse kinematics");
+  options.validate();
+  check_pose(T_base_tcp, "UR inverse kinematics: target pose");
+  const Eigen::Isometry3d t = chain.dh0_flange_from_base_tcp(T_base_tcp);
+  const Eigen::Matrix3d& r = t.linear();
+  const Eigen::Vector3d x6 = r.col(0), y6 = r.col(1), z6 = r.col(2);
+  const Eigen::Vector3d p = t.translation();
+  const double tol = options.singular_tolerance;
+
+  IkResult result;
+  Branch branches[8];
+  int n_branches = 0;
+  std::uint8_t pose_flags = kNoSingularity;
+
+  // q1: the wrist centre lies at distance d4 from the vertical plane of the upper arm.
+  const Eigen::Vector3d o5 = p - g.d6 * z6;
+  const double r2 = o5.x() * o5.x() + o5.y() * o5.y();
+  const double radius = std::sqrt(r2);
+  if (radius < std::abs(g.d4) - options.reach_tolerance_m) {
+    result.message = "the wrist centre is " + mm(radius) + " from the joint-1 axis, closer than d4 = " +
+                     mm(std::abs(g.d4)) + ": inside the cylinder no configuration reaches";
+    return result;
+  }
+  const double h_abs = std::sqrt(std::max(r2 - g.d4 * g.d4, 0.0));  // reach in the arm plane
+  // Found through a square root (like q3 below): test cos^2 of the angle, not |sin| (see IkOptions).
+  const bool shoulder_singular = h_abs * h_abs <= tol * r2;
+  if (shoulder_singular) pose_flags |= kShoulderSingular;
+  const double cos_phi = radius > 0 ? o5.x() / radius : 1.0;
+  const double sin_phi = radius > 0 ? o5.y() / radius : 0.0;
+  const double sin_alpha = radius > 0 ? std::clamp(g.d4 / radius, -1.0, 1.0) : 1.0;
+  const double cos_alpha = radius > 0 ? h_abs / radius : 0.0;
+  const double phi = std::atan2(o5.y(), o5.x());
+  const double alpha = std::atan2(sin_alpha, cos_alpha);
+  const double reach_max = std::abs(g.a2) + std::abs(g.a3);
+  const double reach_min = std::abs(std::abs(g.a2) - std::abs(g.a3));
+  double worst_reach = -1.0;
+
+  for (int shoulder = 0; shoulder < (shoulder_singular ? 1 : 2); ++shoulder) {
+    // shoulder 0: h = +h_abs (q1 = phi + alpha); 1: h = -h_abs (q1 = phi + pi - alpha).
+    const double h_sign = shoulder == 0 ? 1.0 : -1.0;
+    const double theta1 = shoulder == 0 ? phi + alpha : phi + kPi - alpha;
+    // cos/sin of q1 without trigonometry: rotate (cos phi, sin phi) by alpha or pi - alpha.
+    const double ca = h_sign * cos_alpha;
+    const double c1 = cos_phi * ca - sin_phi * sin_alpha;
+    const double s1 = sin_phi * ca + cos_phi * sin_alpha;
+    const Eigen::Vector3d z1(s1, -c1, 0.0);
+    const double zx = z1.dot(x6), zy = z1.dot(y6), c5 = z1.dot(z6);
+    const double s5_abs = std::hypot(zx, zy);
+    const bool wrist_singular = s5_abs <= tol;
+    if (wrist_singular) pose_flags |= kWristSingular;
+
+    for (int wrist = 0; wrist < (wrist_singular ? 1 : 2); ++wrist) {
+      const double s5 = wrist == 0 ? s5_abs : -s5_abs;
+      const double theta5 = std::atan2(s5, c5);
+      double theta6, s6, c6;
+      if (wrist_singular) {
+        theta6 = options.singular_free_angle_rad + g.offset[5];
+        s6 = std::sin(theta6);
+        c6 = std::cos(theta6);
+      } else {
+        s6 = -zy / s5;
+        c6 = zx / s5;
+        theta6 = std::atan2(s6, c6);
+      }
+      // Frame 4: origin and x axis, then the planar problem in frame 1 (x1 horizontal, y1 up).
+      const Eigen::Vector3d o4 = o5 + g.d5 * (s6 * x6 + c6 * y6);
+      const Eigen::Vector3d x4 = c5 * c6 * x6 - c5 * s6 * y6 - s5 * z6;
+      const double px = c1 * o4.x() + s1 * o4.y();
+      const double py = o4.z() - g.d1;
+      const double theta234 = std::atan2(x4.z(), c1 * x4.x() + s1 * x4.y());
+      const double reach = std::hypot(px, py);
+      if (reach > reach_max + options.reach_tolerance_m ||
+          reach < reach_min - options.reach_tolerance_m) {
+        worst_reach = reach;
+        continue;
+      }
+      const double c3 = std::clamp((px * px + py * py - g.a2 * g.a2 - g.a3 * g.a3) /
+                                       (2.0 * g.a2 * g.a3),
+                                   -1.0, 1.0);
+      const double s3_abs = std::sqrt(std::max(0.0, 1.0 - c3 * c3));
+      const bool elbow_singular = 1.0 - std::abs(c3) <= tol;
+      if (elbow_singular) pose_flags |= kElbowSingular;
+
+      for (int elbow = 0; elbow < (elbow_singular ? 1 : 2); ++elbow) {
+        const double s3 = elbow == 0 ? s3_abs : -s3_abs;
+        const double theta3 = std::atan2(s3, c3);
+        const double theta2 = angle_difference(px, py, g.a2 + g.a3 * c3, g.a3 * s3);
+        const double theta4 = theta234 - theta2 - theta3;
+        Branch& b = branches[n_branches++];
+        b.theta[0] = theta1;
+        b.theta[1] = theta2;
+        b.theta[2] = theta3;
+        b.theta[3] = theta4;
+        b.theta[4] = theta5;
+        b.theta[5] = theta6;
+        // Labels as defined in ur_ik.hpp (elbow: frame-2 origin a2 (c2, s2) vs the line to o3).
+        b.shoulder_left = !(h_sign * g.d4 > 0.0);
+        const double cross = g.a2 * (px * std::sin(theta2) - py * std::cos(theta2));
+        b.elbow_up = px * cross > 0.0;
+        b.wrist_flipped = s5 < 0.0;
+        b.singular = static_cast<std::uint8_t>((shoulder_singular ? kShoulderSingular : 0) |
+                                               (wrist_singular ? kWristSingular : 0) |
+                                               (elbow_singular ? kElbowSingular : 0));
+      }
+    }
+  }
+  result.singular = pose_flags;
+  if (n_branches == 0) {
+    result.message = "the wrist (frame 4 origin) is " + mm(worst_reach) +
+                     " from the shoulder, outside the arm's reach [" + mm(reach_min) + ", " +
+                     mm(reach_max) + "]";
+    return result;
+  }
+
+  result.solutions.reserve(static_cast<std::size_t>(n_branches));
+  for (int k = 0; k < n_branches; ++k) {
+    const Branch& b = branches[k];
+    JointVector q(6);
+    for (int i = 0; i < 6; ++i) q(i) = wrap_angle(b.theta[i] - g.offset[i]);
+    bool inside = true;
+    for (int i = 0; i < 6 && inside && options.apply_joint_limits; ++i) {
+      inside = detail::shift_joint(q(i), chain.limit(i), 0.0);
+    }
+    if (!inside) {
+      ++result.n_outside_limits;
+      continue;
+    }
+    result.solutions.push_back(
+        {q, ConfigurationLabel::ur(b.shoulder_left, b.elbow_up, b.wrist_flipped), b.singular});
+  }
+  std::sort(result.solutions.begin(), result.solutions.end(),
+            [](const IkSolution& a, const IkSolution& b) {
+              return a.config.index() < b.config.index();
+            });
+  if (result.solutions.empty()) {
+    result.status = IkStatus::kOutsideLimits;
+    result.message = "all " + std::to_string(n_branches) + " solutions violate the joint limits";
+  } else {
+    result.status = IkStatus::kOk;
+  }
+  return result;
+}
+
+IkResult ur_inverse_kinematics_nearest(const SerialChain& chain,
+                                       const Eigen::Isometry3d& T_base_tcp,
+                                       const JointRef& q_current_rad, JointNorm norm,
+                                       const IkOptions& options) {
+  chain.check_joints(q_current_rad, "UR nearest IK: current joints");
+  IkOptions all_options = options;
+  all_options.apply_joint_limits = false;
+  all_options.singular_free_angle_rad = q_current_rad(5);
+  IkResult all = ur_inverse_kinematics(chain, T_base_tcp, all_options);
+  if (all.status != IkStatus::kOk) return all;
+
+  IkResult result;
+  result.singular = all.singular;
+  double best = std::numeric_limits<double>::infinity();
+  for (const IkSolution& s : all.solutions) {
+    // The controller moves each joint to the 2 pi shift nearest its current value.
+    std::optional<JointVector> q = options.apply_joint_limits
+                                       ? shift_nearest(chain, s.q_rad, q_current_rad)
+                                       : std::optional<JointVector>(s.q_rad);
+    if (!q) {
+      ++result.n_outside_limits;
+      continue;
+    }
+    if (!options.apply_joint_limits) {
+      for (int i = 0; i < 6; ++i) {
+        (*q)(i) += 2.0 * kPi * std::round((q_current_rad(i) - (*q)(i)) / (2.0 * kPi));
+      }
+    }
+    const Eigen::VectorXd travel = *q - q_current_rad;
+    const double d = norm == JointNorm::kL2 ? travel.norm() : travel.cwiseAbs().maxCoeff();
+    if (d < best) {
+      best = d;
+      result.solutions.assign(1, {*q, s.config, s.singular});
+    }
+  }
+  if (result.solutions.empty()) {
+    result.status = IkStatus::kOutsideLimits;
+    result.message = "no solution has a 2 pi shift within the joint limits";
+  } else {
+    result.status = IkStatus::kOk;
+  }
+  return result;
+}
+
+ConfigurationLabel ur_configuration(const SerialChain& chain, const JointRef& q_rad) {
+  const UrGeometry g = ur_geometry(chain, "UR configuration");
+  chain.check_joints(q_rad, "UR configuration");
+  double theta[6];
+  for (int i = 0; i < 6; ++i) theta[i] = q_rad(i) + g.offset[i];
+  const double t23 = theta[1] + theta[2];
+  const double t234 = t23 + theta[3];
+  // Frame-3 origin in the arm plane of frame 1 (x1 horizontal, y1 up), relative to the shoulder.
+  const double px = g.a2 * std::cos(theta[1]) + g.a3 * std::cos(t23);
+  const double py = g.a2 * std::sin(theta[1]) + g.a3 * std::sin(t23);
+  const double h = px + g.d5 * std::sin(t234);  // reach of the wrist centre along x1
+  const double cross = g.a2 * (px * std::sin(theta[1]) - py * std::cos(theta[1]));
+  return ConfigurationLabel::ur(!(h * g.d4 > 0.0), px * cross > 0.0, std::sin(theta[4]) < 0.0);
+}
+
+}  // namespace vrreg::kinematics

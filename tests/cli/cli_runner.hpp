@@ -1,0 +1,59 @@
+#pragma once
+// Runs the built `vrreg` command and captures exit status, stdout and stderr.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace vrreg::testing {
+
+struct CliResult {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// Runs `vrreg ARGS` through the shell (ARGS already quoted as needed).
+inline CliResult run_vrreg(const std::string& args) {
+  const auto dir = std::filesystem::temp_directory_path();
+  static int counter = 0;
+  const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  const auto out_path = dir / ("vrreg-cli-out-" + tag);
+  const auto err_path = dir / ("vrreg-cli-err-" + tag);
+  const std::string command = std::string("'") + VRREG_CLI_PATH + "' " + args + " >'" +
+                              out_path.string() + "' 2>'" + err_path.string() + "' </dev/null";
+  const int raw = std::system(command.c_str());
+  CliResult r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.out = read_text(out_path);
+  r.err = read_text(err_path);
+  std::filesystem::remove(out_path);
+  std::filesystem::remove(err_path);
+  return r;
+}
+
+/// A fresh empty directory for one test's files.
+inline std::filesystem::path fresh_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("vrreg-test-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+}  // namespace vrreg::testing

@@ -1,0 +1,112 @@
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "vrreg/core/check.hpp"
+#include "vrreg/kinematics/configuration_label.hpp"
+#include "vrreg/kinematics/inverse_kinematics.hpp"
+#include "vrreg/kinematics/joint_distance.hpp"
+#include "vrreg/kinematics/robots.hpp"
+#include "vrreg/kinematics/ur_ik.hpp"
+
+namespace vrreg::kinematics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(ConfigurationLabel, StringsAndIndicesAreStableAndRoundTrip) {
+  EXPECT_EQ(ConfigurationLabel::ur(true, true, false).to_string(),
+            "shoulder-left/elbow-up/wrist-noflip");
+  EXPECT_EQ(ConfigurationLabel::ur(true, true, false).index(), 0);
+  EXPECT_EQ(ConfigurationLabel::ur(false, false, true).to_string(),
+            "shoulder-right/elbow-down/wrist-flip");
+  EXPECT_EQ(ConfigurationLabel::ur(false, false, true).index(), 7);
+  EXPECT_EQ(ConfigurationLabel::lwr(1, -1, 1).to_string(), "GC=+,-,+");
+  EXPECT_EQ(ConfigurationLabel::lwr(1, -1, 1).index(), 2);
+  EXPECT_EQ(ConfigurationLabel::lwr(-1, 1, 1).lwr_sign(2), -1);
+  std::set<std::string> names;
+  for (ArmKind kind : {ArmKind::kUr, ArmKind::kLwr}) {
+    for (int i = 0; i < 8; ++i) {
+      const ConfigurationLabel label(kind, i);
+      names.insert(label.to_string());
+      EXPECT_EQ(ConfigurationLabel::parse(label.to_string()), label);
+    }
+  }
+  EXPECT_EQ(names.size(), 16u);
+  EXPECT_THROW(ConfigurationLabel::parse("elbow-up"), InputError);
+  EXPECT_THROW(ConfigurationLabel(ArmKind::kUr, 8), InputError);
+}
+
+TEST(ConfigurationLabel, UrZeroPoseIsShoulderLeft) {
+  JointVector q(6);
+  q << 0.0, -0.5, 1.0, 0.0, 1.0, 0.0;
+  EXPECT_TRUE(ur_configuration(ur5(), q).shoulder_left());
+  EXPECT_FALSE(ur_configuration(ur5(), q).wrist_flipped());
+  q(4) = -1.0;
+  EXPECT_TRUE(ur_configuration(ur5(), q).wrist_flipped());
+  EXPECT_EQ(configuration_of(lwr4(), Eigen::VectorXd::Zero(7))->to_string(), "GC=+,+,+");
+}
+
+TEST(JointDistance, WrapsAngles) {
+  Eigen::VectorXd a(3), b(3);
+  a << kPi - 0.1, 0.0, 2 * kPi;
+  b << -kPi + 0.1, 0.3, 0.0;
+  EXPECT_NEAR(joint_distance_linf(a, b), 0.3, 1e-12);
+  EXPECT_NEAR(joint_distance_l2(a, b), std::sqrt(0.2 * 0.2 + 0.3 * 0.3), 1e-12);
+  EXPECT_NEAR(joint_distance(a, b, JointNorm::kL2), joint_distance_l2(a, b), 0.0);
+  EXPECT_THROW(joint_distance_l2(a, Eigen::VectorXd::Zero(2)), InputError);
+  EXPECT_NEAR(wrap_angle(kPi), kPi, 0.0);
+  EXPECT_NEAR(wrap_angle(-kPi), kPi, 0.0);
+  EXPECT_NEAR(wrap_angle(3 * kPi + 0.5), -kPi + 0.5, 1e-12);
+}
+
+TEST(JointDistance, NearestAndOrderDependOnTheNorm) {
+  // L2 prefers one joint jumping by ~pi; Linf prefers small moves in every joint.
+  Eigen::MatrixXd candidates(3, 2);
+  candidates << 2.8, 1.0,  //
+      0.0, 1.0,            //
+      0.0, 1.0;
+  const Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+  EXPECT_EQ(*nearest_configuration(candidates, reference, JointNorm::kL2), 1);
+  EXPECT_EQ(*nearest_configuration(candidates, reference, JointNorm::kLinf), 1);
+  candidates(0, 0) = 1.5;
+  EXPECT_EQ(*nearest_configuration(candidates, reference, JointNorm::kL2), 0);
+  EXPECT_EQ(*nearest_configuration(candidates, reference, JointNorm::kLinf), 1);
+  EXPECT_EQ(order_by_distance(candidates, reference, JointNorm::kL2), (std::vector<int>{0, 1}));
+  EXPECT_FALSE(nearest_configuration(Eigen::MatrixXd(3, 0), reference, JointNorm::kL2));
+}
+
+TEST(JointDistance, ShiftsIntoLimits) {
+  const SerialChain chain = ur5();
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(6);
+  q(0) = 3.0;
+  Eigen::VectorXd reference = Eigen::VectorXd::Zero(6);
+  reference(0) = -3.5;
+  const auto shifted = shift_nearest(chain, q, reference);
+  ASSERT_TRUE(shifted);
+  EXPECT_NEAR((*shifted)(0), 3.0 - 2 * kPi, 1e-15);
+  q(0) = 7.0;  // outside +-2 pi, its shift 7 - 2 pi is inside
+  EXPECT_NEAR((*shift_into_limits(chain, q))(0), 7.0 - 2 * kPi, 1e-15);
+  const SerialChain lwr = lwr4();
+  Eigen::VectorXd ql = Eigen::VectorXd::Zero(7);
+  ql(1) = 2.5;  // 143 deg: no shift fits +-120 deg
+  EXPECT_FALSE(shift_into_limits(lwr, ql));
+}
+
+TEST(InverseKinematics, DispatchesByFamily) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translation() << 0.3, 0.2, 0.4;
+  EXPECT_NO_THROW(inverse_kinematics(ur5(), t));
+  EXPECT_THROW(inverse_kinematics(lwr4(), t), InputError);  // needs psi
+  EXPECT_NO_THROW(inverse_kinematics(lwr4(), t, 0.3));
+  std::vector<DhRow> rows = ur5().rows();
+  rows[0].a_m = 0.05;
+  const SerialChain generic("generic", rows, ur5().limits());
+  EXPECT_THROW(inverse_kinematics(generic, t), InputError);
+  EXPECT_FALSE(configuration_of(generic, Eigen::VectorXd::Zero(6)));
+}
+
+}  // namespace
+}  // namespace vrreg::kinematics
