@@ -1,5 +1,7 @@
 #include "vrreg/kinematics/inverse_kinematics.hpp"
 
+#include <limits>
+
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/lwr_ik.hpp"
 #include "vrreg/kinematics/ur_ik.hpp"
@@ -24,6 +26,37 @@ IkResult inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T
                                 << "' has neither the UR nor the LWR 4+ structure; no analytic "
                                    "IK applies to its DH table");
   return {};
+}
+
+IkResult nearest_solution(const SerialChain& chain, const IkResult& all,
+                          const JointRef& q_current_rad, JointNorm norm) {
+  chain.check_joints(q_current_rad, "nearest IK solution: current joints");
+  if (all.status != IkStatus::kOk) return all;
+  IkResult result;
+  result.singular = all.singular;
+  result.n_outside_limits = all.n_outside_limits;
+  double best = std::numeric_limits<double>::infinity();
+  for (const IkSolution& s : all.solutions) {
+    // The controller moves each joint to the 2 pi shift nearest its current value.
+    const std::optional<JointVector> q = shift_nearest(chain, s.q_rad, q_current_rad);
+    if (!q) {
+      ++result.n_outside_limits;
+      continue;
+    }
+    const JointVector travel = *q - q_current_rad;
+    const double d = norm == JointNorm::kL2 ? travel.norm() : travel.cwiseAbs().maxCoeff();
+    if (d < best) {
+      best = d;
+      result.solutions.assign(1, {*q, s.config, s.singular});
+    }
+  }
+  if (result.solutions.empty()) {
+    result.status = IkStatus::kOutsideLimits;
+    result.message = "no solution has a 2 pi shift within the joint limits";
+  } else {
+    result.status = IkStatus::kOk;
+  }
+  return result;
 }
 
 std::optional<ConfigurationLabel> configuration_of(const SerialChain& chain,

@@ -15,6 +15,7 @@
 #include "limits_fit.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
+#include "vrreg/kinematics/inverse_kinematics.hpp"
 #include "vrreg/kinematics/pose.hpp"
 
 namespace vrreg::kinematics {
@@ -215,42 +216,10 @@ IkResult ur_inverse_kinematics_nearest(const SerialChain& chain,
                                        const IkOptions& options) {
   chain.check_joints(q_current_rad, "UR nearest IK: current joints");
   IkOptions all_options = options;
-  all_options.apply_joint_limits = false;
+  all_options.apply_joint_limits = false;  // limits are applied to the shifted joints
   all_options.singular_free_angle_rad = q_current_rad(5);
-  IkResult all = ur_inverse_kinematics(chain, T_base_tcp, all_options);
-  if (all.status != IkStatus::kOk) return all;
-
-  IkResult result;
-  result.singular = all.singular;
-  double best = std::numeric_limits<double>::infinity();
-  for (const IkSolution& s : all.solutions) {
-    // The controller moves each joint to the 2 pi shift nearest its current value.
-    std::optional<JointVector> q = options.apply_joint_limits
-                                       ? shift_nearest(chain, s.q_rad, q_current_rad)
-                                       : std::optional<JointVector>(s.q_rad);
-    if (!q) {
-      ++result.n_outside_limits;
-      continue;
-    }
-    if (!options.apply_joint_limits) {
-      for (int i = 0; i < 6; ++i) {
-        (*q)(i) += 2.0 * kPi * std::round((q_current_rad(i) - (*q)(i)) / (2.0 * kPi));
-      }
-    }
-    const Eigen::VectorXd travel = *q - q_current_rad;
-    const double d = norm == JointNorm::kL2 ? travel.norm() : travel.cwiseAbs().maxCoeff();
-    if (d < best) {
-      best = d;
-      result.solutions.assign(1, {*q, s.config, s.singular});
-    }
-  }
-  if (result.solutions.empty()) {
-    result.status = IkStatus::kOutsideLimits;
-    result.message = "no solution has a 2 pi shift within the joint limits";
-  } else {
-    result.status = IkStatus::kOk;
-  }
-  return result;
+  return nearest_solution(chain, ur_inverse_kinematics(chain, T_base_tcp, all_options),
+                          q_current_rad, norm);
 }
 
 ConfigurationLabel ur_configuration(const SerialChain& chain, const JointRef& q_rad) {

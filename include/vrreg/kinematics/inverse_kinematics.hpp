@@ -6,6 +6,7 @@
 
 #include "vrreg/kinematics/configuration_label.hpp"
 #include "vrreg/kinematics/ik_result.hpp"
+#include "vrreg/kinematics/joint_distance.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
 
 namespace vrreg::kinematics {
@@ -15,6 +16,12 @@ namespace vrreg::kinematics {
 IkResult inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T_base_tcp,
                             std::optional<double> psi_rad = std::nullopt,
                             const IkOptions& options = {});
+
+/// Controller-style choice among `all` (e.g. computed with apply_joint_limits = false): each
+/// solution moved to the 2 pi shifts within the limits nearest `q_current_rad`, then the one with
+/// the smallest joint travel in `norm`. A result with at most one solution.
+IkResult nearest_solution(const SerialChain& chain, const IkResult& all,
+                          const JointRef& q_current_rad, JointNorm norm = JointNorm::kL2);
 
 /// The configuration label of `q_rad` [rad]; empty for a generic chain.
 std::optional<ConfigurationLabel> configuration_of(const SerialChain& chain, const JointRef& q_rad);

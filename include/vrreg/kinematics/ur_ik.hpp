@@ -23,7 +23,8 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
                                const IkOptions& options = {});
 
 /// Controller-style single solution: over all branches and 2 pi shifts within the limits, the
-/// joint vector nearest `q_current_rad` in `norm` (at a wrist singularity q6 = current q6).
+/// joint vector nearest `q_current_rad` in `norm` (at a wrist singularity q6 = current q6);
+/// joint limits always apply (options.apply_joint_limits is ignored).
 IkResult ur_inverse_kinematics_nearest(const SerialChain& chain,
                                        const Eigen::Isometry3d& T_base_tcp,
                                        const JointRef& q_current_rad,

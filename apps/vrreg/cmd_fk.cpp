@@ -1,0 +1,113 @@
+// vrreg fk: forward kinematics of a robot (built-in or robot file) at given joint values:
+// the flange / TCP pose, its configuration label and, for the LWR 4+, the arm angle psi.
+#include <cstdio>
+#include <memory>
+
+#include "cli_support.hpp"
+#include "command_registry.hpp"
+#include "robot_cli.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
+#include "vrreg/kinematics/inverse_kinematics.hpp"
+#include "vrreg/kinematics/lwr_ik.hpp"
+
+namespace vrreg::cli {
+namespace {
+
+struct FkArgs {
+  std::string robot;
+  std::vector<double> joints;
+  bool degrees = false;
+  std::vector<double> tool_mm;
+  bool json = false;
+};
+
+void run_fk(const FkArgs& args) {
+  const kinematics::SerialChain chain = robot_from_args(args.robot, args.tool_mm);
+  check_finite(args.joints, "joint values");
+  VRREG_THROW_UNLESS(static_cast<int>(args.joints.size()) == chain.n_joints(),
+                     "robot '" << chain.name() << "' has " << chain.n_joints() << " joints, got "
+                               << args.joints.size() << " joint values");
+  kinematics::JointVector q(chain.n_joints());
+  for (int i = 0; i < chain.n_joints(); ++i) {
+    const double v = args.joints[static_cast<std::size_t>(i)];
+    q(i) = args.degrees ? units::deg_to_rad(v) : v;
+  }
+  const Eigen::Isometry3d pose = kinematics::forward_kinematics(chain, q);
+  const std::optional<kinematics::ConfigurationLabel> config = kinematics::configuration_of(chain, q);
+  std::optional<kinematics::LwrArmState> arm;
+  if (chain.family() == kinematics::ChainFamily::kLwr) arm = kinematics::lwr_arm_state(chain, q);
+  const bool in_limits = chain.within_limits(q);
+
+  if (args.json) {
+    nlohmann::json j;
+    j["robot"] = chain.name();
+    j["frame"] = pose_frame_description(chain);
+    j["q_rad"] = std::vector<double>(q.data(), q.data() + q.size());
+    j["q_deg"] = degrees_json(q);
+    pose_to_json(pose, j);
+    if (config) {
+      j["config"] = config->to_string();
+      j["config_index"] = config->index();
+    }
+    if (arm) {
+      j["psi_deg"] = units::rad_to_deg(arm->psi_rad);
+      j["singular"] = singular_json(arm->singular);
+    }
+    j["within_limits"] = in_limits;
+    print_json(j);
+    return;
+  }
+  std::printf("%s forward kinematics: %s\n", chain.name().c_str(),
+              pose_frame_description(chain).c_str());
+  std::printf("  joints [deg]     ");
+  for (int i = 0; i < q.size(); ++i) std::printf(" %.6f", units::rad_to_deg(q(i)));
+  std::printf("%s\n", in_limits ? "" : "   (outside the joint limits)");
+  const std::string xyz = xyz_mm_text(pose.translation());
+  const std::string rpy = rpy_deg_text(pose.linear());
+  std::printf("  position [mm]     %s\n", xyz.c_str());
+  std::printf("  rpy [deg]         %s   (roll pitch yaw, R = Rz(yaw) Ry(pitch) Rx(roll))\n",
+              rpy.c_str());
+  for (int r = 0; r < 3; ++r) {
+    std::printf("  %s   %12.9f %12.9f %12.9f\n", r == 0 ? "rotation       " : "               ",
+                pose.linear()(r, 0), pose.linear()(r, 1), pose.linear()(r, 2));
+  }
+  if (config) std::printf("  configuration     %s (index %d)\n", config->to_string().c_str(), config->index());
+  if (arm) {
+    std::printf("  arm angle psi     %.6f deg\n", units::rad_to_deg(arm->psi_rad));
+    if (arm->singular != kinematics::kNoSingularity) {
+      std::printf("  singular          %s\n", kinematics::singularity_names(arm->singular).c_str());
+    }
+  }
+  std::printf("  back to joints:   vrreg ik %s --xyz-mm %s --rpy-deg %s", args.robot.c_str(),
+              xyz.c_str(), rpy.c_str());
+  if (arm) std::printf(" --psi-deg %.6f", units::rad_to_deg(arm->psi_rad));
+  if (!args.tool_mm.empty()) {
+    std::printf(" --tool-mm %g %g %g", args.tool_mm[0], args.tool_mm[1], args.tool_mm[2]);
+  }
+  std::printf("\n");
+}
+
+void add_fk_command(CLI::App& app) {
+  auto args = std::make_shared<FkArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "fk", "forward kinematics: the flange (or TCP) pose of a robot at given joint values");
+  cmd->add_option("robot", args->robot,
+                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (JSON/YAML DH table)")
+      ->required();
+  cmd->add_option("joints", args->joints, "joint values Q1 ... QN (rad, or deg with --deg)")
+      ->required();
+  cmd->add_flag("--deg", args->degrees, "joint values are in degrees");
+  cmd->add_option("--tool-mm", args->tool_mm,
+                  "TCP offset X Y Z in the flange frame, mm (replaces the robot's tool)")
+      ->expected(3);
+  cmd->add_flag("--json", args->json, "print one JSON object");
+  cmd->callback([args] { run_fk(*args); });
+}
+
+}  // namespace
+
+VRREG_REGISTER_COMMAND(60, add_fk_command);
+
+}  // namespace vrreg::cli

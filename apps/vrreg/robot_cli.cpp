@@ -1,0 +1,84 @@
+#include "robot_cli.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/io/robot_file.hpp"
+#include "vrreg/kinematics/pose.hpp"
+
+namespace vrreg::cli {
+
+void check_finite(const std::vector<double>& values, const char* what) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    VRREG_THROW_UNLESS(std::isfinite(values[i]),
+                       what << ": value " << i + 1 << " is not a finite number (" << values[i]
+                            << ")");
+  }
+}
+
+kinematics::SerialChain robot_from_args(const std::string& robot,
+                                        const std::vector<double>& tool_mm) {
+  kinematics::SerialChain chain = io::load_robot(robot);
+  if (tool_mm.empty()) return chain;
+  check_finite(tool_mm, "--tool-mm");
+  Eigen::Isometry3d tool = Eigen::Isometry3d::Identity();
+  tool.translation() << units::mm_to_m(tool_mm[0]), units::mm_to_m(tool_mm[1]),
+      units::mm_to_m(tool_mm[2]);
+  return chain.with_tool(tool);
+}
+
+std::string pose_frame_description(const kinematics::SerialChain& chain) {
+  const bool tool = chain.T_flange_tcp().matrix() != Eigen::Matrix4d::Identity();
+  const bool base = chain.T_base_dh0().matrix() != Eigen::Matrix4d::Identity();
+  std::string s = tool ? "TCP (flange + tool offset " +
+                             xyz_mm_text(chain.T_flange_tcp().translation(), 3) + " mm)"
+                       : "flange (last DH frame)";
+  s += base ? " in the robot base frame" : " in the DH base frame";
+  return s;
+}
+
+void pose_to_json(const Eigen::Isometry3d& pose, nlohmann::json& j) {
+  const Eigen::Vector3d p = pose.translation();
+  j["xyz_mm"] = {units::m_to_mm(p.x()), units::m_to_mm(p.y()), units::m_to_mm(p.z())};
+  const Eigen::Vector3d rpy = kinematics::rpy_from_rotation(pose.linear());
+  j["rpy_deg"] = {units::rad_to_deg(rpy(0)), units::rad_to_deg(rpy(1)), units::rad_to_deg(rpy(2))};
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 3; ++r) {
+    rows.push_back({pose.linear()(r, 0), pose.linear()(r, 1), pose.linear()(r, 2)});
+  }
+  j["rotation"] = rows;
+}
+
+std::string xyz_mm_text(const Eigen::Vector3d& metres, int decimals) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%.*f %.*f %.*f", decimals, units::m_to_mm(metres.x()), decimals,
+                units::m_to_mm(metres.y()), decimals, units::m_to_mm(metres.z()));
+  return buf;
+}
+
+std::string rpy_deg_text(const Eigen::Matrix3d& rotation, int decimals) {
+  const Eigen::Vector3d rpy = kinematics::rpy_from_rotation(rotation);
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%.*f %.*f %.*f", decimals, units::rad_to_deg(rpy(0)), decimals,
+                units::rad_to_deg(rpy(1)), decimals, units::rad_to_deg(rpy(2)));
+  return buf;
+}
+
+nlohmann::json singular_json(std::uint8_t flags) {
+  nlohmann::json names = nlohmann::json::array();
+  if ((flags & kinematics::kWristSingular) != 0) names.push_back("wrist");
+  if ((flags & kinematics::kShoulderSingular) != 0) names.push_back("shoulder");
+  if ((flags & kinematics::kElbowSingular) != 0) names.push_back("elbow");
+  if ((flags & kinematics::kArmAngleSingular) != 0) names.push_back("arm-angle");
+  return names;
+}
+
+nlohmann::json degrees_json(const Eigen::Ref<const Eigen::VectorXd>& q_rad) {
+  nlohmann::json out = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < q_rad.size(); ++i) out.push_back(units::rad_to_deg(q_rad(i)));
+  return out;
+}
+
+}  // namespace vrreg::cli
