@@ -1,10 +1,10 @@
 // RRBC target corrections (Eq. 7, 8) per second for 10^6 targets: grid (trilinear), scattered
 // (Delaunay, barycentric) and octuplet, beside the peer a user might write instead: the 8 nearest
 // fiducials (kd-tree) with inverse-distance weights. Interpolator build times are separate.
+#include <benchmark/benchmark.h>
+
 #include <array>
 #include <cmath>
-
-#include <benchmark/benchmark.h>
 #include <nanoflann.hpp>
 
 #include "vrreg/core/model.hpp"
@@ -45,7 +45,8 @@ Points3 scattered_fiducials(Eigen::Index n) {
   vrreg::Random rng(71);
   Points3 out(3, n);
   for (Eigen::Index j = 0; j < n; ++j) {
-    out.col(j) = Eigen::Vector3d(rng.uniform(0.3, 0.55), rng.uniform(-0.15, 0.15), rng.uniform(0.05, 0.25));
+    out.col(j) =
+        Eigen::Vector3d(rng.uniform(0.3, 0.55), rng.uniform(-0.15, 0.15), rng.uniform(0.05, 0.25));
   }
   return out;
 }
@@ -82,7 +83,8 @@ Targets make_targets(Eigen::Index n) {
   vrreg::Random rng(83);
   Targets t{Points3(3, n), Points3(3, n)};
   for (Eigen::Index i = 0; i < n; ++i) {
-    t.robot_m.col(i) = Eigen::Vector3d(rng.uniform(0.31, 0.54), rng.uniform(-0.14, 0.14), rng.uniform(0.06, 0.24));
+    t.robot_m.col(i) =
+        Eigen::Vector3d(rng.uniform(0.31, 0.54), rng.uniform(-0.14, 0.14), rng.uniform(0.06, 0.24));
   }
   t.sensor_m = sensor_pose().inverse().apply_all(t.robot_m);
   return t;
@@ -116,7 +118,8 @@ void BM_stencils_grid(benchmark::State& state) {
   for (auto _ : state) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (Eigen::Index i = 0; i < kTargets; ++i) {
-      sum += vrreg::interpolate_correction(vrreg::grid_stencil(grid, targets().robot_m.col(i), 1e-6), eps);
+      sum += vrreg::interpolate_correction(
+          vrreg::grid_stencil(grid, targets().robot_m.col(i), 1e-6), eps);
     }
     benchmark::DoNotOptimize(sum);
   }
@@ -153,14 +156,19 @@ BENCHMARK(BM_stencils_scattered)->Arg(0)->Arg(1)->Arg(10000)->Unit(benchmark::kM
 /// linear precision and no outside flag, but it is what one writes in ten lines.
 struct Cloud {
   const Points3* points;
-  [[nodiscard]] std::size_t kdtree_get_point_count() const { return static_cast<std::size_t>(points->cols()); }
+  [[nodiscard]] std::size_t kdtree_get_point_count() const {
+    return static_cast<std::size_t>(points->cols());
+  }
   [[nodiscard]] double kdtree_get_pt(std::size_t i, std::size_t d) const {
     return (*points)(static_cast<Eigen::Index>(d), static_cast<Eigen::Index>(i));
   }
   template <class B>
-  bool kdtree_get_bbox(B&) const { return false; }
+  bool kdtree_get_bbox(B&) const {
+    return false;
+  }
 };
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3, std::size_t>;
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud,
+                                                 3, std::size_t>;
 
 void BM_peer_nearest8_idw(benchmark::State& state) {
   const Points3 f = state.range(0) < 2 ? a_fiducials(static_cast<int>(state.range(0)))
@@ -207,24 +215,40 @@ void correct_all(benchmark::State& state, vrreg::InterpolationMethod method) {
     const int nz = state.range(0) == 0 ? 4 : 8;
     for (Eigen::Index i = 0; i < kTargets; ++i) {
       const auto c = static_cast<int>(i % (nx * ny * nz));
-      nominal.col(i) = Eigen::Vector3d(0.3 + h * (2 * (c % nx) + 1), -0.15 + h * (2 * ((c / nx) % ny) + 1),
-                                       0.05 + h * (2 * (c / (nx * ny)) + 1));
+      nominal.col(i) =
+          Eigen::Vector3d(0.3 + h * (2 * (c % nx) + 1), -0.15 + h * (2 * ((c / nx) % ny) + 1),
+                          0.05 + h * (2 * (c / (nx * ny)) + 1));
     }
   }
   int flagged = 0;
   for (auto _ : state) {
-    const vrreg::TargetCorrection c = vrreg::correct_targets(model, targets().sensor_m, nominal, settings);
+    const vrreg::TargetCorrection c =
+        vrreg::correct_targets(model, targets().sensor_m, nominal, settings);
     flagged = c.n_flagged;
     benchmark::DoNotOptimize(c.corrected_robot_m.data());
   }
   state.SetItemsProcessed(state.iterations() * kTargets);
   state.counters["flagged"] = flagged;
 }
-void BM_correct_targets_grid(benchmark::State& s) { correct_all(s, vrreg::InterpolationMethod::kGrid); }
-void BM_correct_targets_scattered(benchmark::State& s) { correct_all(s, vrreg::InterpolationMethod::kScattered); }
-void BM_correct_targets_octuplet(benchmark::State& s) { correct_all(s, vrreg::InterpolationMethod::kOctuplet); }
+void BM_correct_targets_grid(benchmark::State& s) {
+  correct_all(s, vrreg::InterpolationMethod::kGrid);
+}
+void BM_correct_targets_scattered(benchmark::State& s) {
+  correct_all(s, vrreg::InterpolationMethod::kScattered);
+}
+void BM_correct_targets_octuplet(benchmark::State& s) {
+  correct_all(s, vrreg::InterpolationMethod::kOctuplet);
+}
 BENCHMARK(BM_correct_targets_grid)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_correct_targets_scattered)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_correct_targets_octuplet)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_correct_targets_scattered)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_correct_targets_octuplet)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace

@@ -35,7 +35,8 @@ void run_fk(const FkArgs& args) {
     q(i) = args.degrees ? units::deg_to_rad(v) : v;
   }
   const Eigen::Isometry3d pose = kinematics::forward_kinematics(chain, q);
-  const std::optional<kinematics::ConfigurationLabel> config = kinematics::configuration_of(chain, q);
+  const std::optional<kinematics::ConfigurationLabel> config =
+      kinematics::configuration_of(chain, q);
   std::optional<kinematics::LwrArmState> arm;
   if (chain.family() == kinematics::ChainFamily::kLwr) arm = kinematics::lwr_arm_state(chain, q);
   const bool in_limits = chain.within_limits(q);
@@ -73,7 +74,9 @@ void run_fk(const FkArgs& args) {
     std::printf("  %s   %12.9f %12.9f %12.9f\n", r == 0 ? "rotation       " : "               ",
                 pose.linear()(r, 0), pose.linear()(r, 1), pose.linear()(r, 2));
   }
-  if (config) std::printf("  configuration     %s (index %d)\n", config->to_string().c_str(), config->index());
+  if (config)
+    std::printf("  configuration     %s (index %d)\n", config->to_string().c_str(),
+                config->index());
   if (arm) {
     std::printf("  arm angle psi     %.6f deg\n", units::rad_to_deg(arm->psi_rad));
     if (arm->singular != kinematics::kNoSingularity) {

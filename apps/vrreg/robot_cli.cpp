@@ -12,9 +12,9 @@ namespace vrreg::cli {
 
 void check_finite(const std::vector<double>& values, const char* what) {
   for (std::size_t i = 0; i < values.size(); ++i) {
-    VRREG_THROW_UNLESS(std::isfinite(values[i]),
-                       what << ": value " << i + 1 << " is not a finite number (" << values[i]
-                            << ")");
+    VRREG_THROW_UNLESS(std::isfinite(values[i]), what << ": value " << i + 1
+                                                      << " is not a finite number (" << values[i]
+                                                      << ")");
   }
 }
 

@@ -1,11 +1,10 @@
 #pragma once
 // Shared by `vrreg fk` and `vrreg ik`: the ROBOT argument, --tool-mm, pose and joint printing.
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
-#include <nlohmann/json.hpp>
 
 #include "vrreg/kinematics/ik_result.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"

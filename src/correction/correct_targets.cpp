@@ -1,11 +1,11 @@
 #include "vrreg/correction/correct_targets.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 #include <functional>
 #include <optional>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/correction/grid.hpp"
@@ -34,11 +34,12 @@ void check_inputs(const RegistrationModel& model, const ConstPoints3Ref& targets
                      "the model's transform is not finite (scale " << T.scale << ")");
   for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
     const Location& fiducial = model.fiducials[j];
-    VRREG_THROW_UNLESS(fiducial.has_robot && fiducial.robot_m.allFinite(),
-                       "fiducial " << j << " ('" << fiducial.point
-                                   << "') has no finite nominal robot position");
+    VRREG_THROW_UNLESS(
+        fiducial.has_robot && fiducial.robot_m.allFinite(),
+        "fiducial " << j << " ('" << fiducial.point << "') has no finite nominal robot position");
   }
-  VRREG_THROW_UNLESS(targets_sensor_m.allFinite(), "the targets' sensor coordinates are not all finite");
+  VRREG_THROW_UNLESS(targets_sensor_m.allFinite(),
+                     "the targets' sensor coordinates are not all finite");
   VRREG_THROW_UNLESS(targets_robot_nominal_m.cols() == 0 ||
                          targets_robot_nominal_m.cols() == targets_sensor_m.cols(),
                      "got " << targets_robot_nominal_m.cols() << " nominal robot positions for "
@@ -71,9 +72,9 @@ TargetCorrection correct_targets(const RegistrationModel& model,
   InterpolationMethod method = settings.method;
   if (method == InterpolationMethod::kAuto || method == InterpolationMethod::kGrid) {
     GridDetection detection = detect_grid(fiducials_robot_m, tolerance_m);
-    VRREG_THROW_UNLESS(detection.grid || method == InterpolationMethod::kAuto,
-                       "grid interpolation needs fiducials on a complete regular grid: "
-                           << detection.reason);
+    VRREG_THROW_UNLESS(
+        detection.grid || method == InterpolationMethod::kAuto,
+        "grid interpolation needs fiducials on a complete regular grid: " << detection.reason);
     if (detection.grid) {
       grid = std::move(detection.grid);
       method = InterpolationMethod::kGrid;
@@ -117,7 +118,8 @@ TargetCorrection correct_targets(const RegistrationModel& model,
             interpolate_correction(stencil, model.corrections_sensor_m);
         out.corrections_sensor_m.col(i) = correction_m;
         out.corrected_sensor_m.col(i) = target_sensor_m + correction_m;  // Eq. 8
-        out.corrected_robot_m.col(i) = T_robot_sensor.apply(Eigen::Vector3d(target_sensor_m + correction_m));
+        out.corrected_robot_m.col(i) =
+            T_robot_sensor.apply(Eigen::Vector3d(target_sensor_m + correction_m));
       } else {
         out.corrected_sensor_m.col(i) = target_sensor_m;
         out.corrected_robot_m.col(i) = registered_robot_m;

@@ -1,15 +1,14 @@
 #include "vrreg/correction/delaunay.hpp"
 
+#include <libqhull_r/libqhull_r.h>
+
+#include <Eigen/SVD>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <string>
 
-#include <Eigen/SVD>
-
 #include "vrreg/core/check.hpp"
-
-#include <libqhull_r/libqhull_r.h>
 
 namespace vrreg {
 namespace {
@@ -81,8 +80,8 @@ Tetrahedralization delaunay_tetrahedralization(const ConstPoints3Ref& points_m) 
   char options[] = "qhull d Qbb Qc Qz Q12 Qt";
   const int exitcode = qh_new_qhull(qh, 3, static_cast<int>(n), coords.data(), False, options,
                                     nullptr, messages.file());
-  VRREG_THROW_UNLESS(exitcode == 0, "Delaunay tetrahedralization of " << n << " fiducials failed: "
-                                                                       << messages.first_line());
+  VRREG_THROW_UNLESS(exitcode == 0, "Delaunay tetrahedralization of "
+                                        << n << " fiducials failed: " << messages.first_line());
 
   std::vector<Eigen::Index> tet_of_facet(static_cast<std::size_t>(qh->facet_id) + 1, -1);
   Tetrahedralization out;
@@ -112,8 +111,8 @@ Tetrahedralization delaunay_tetrahedralization(const ConstPoints3Ref& points_m) 
           neighbour == nullptr ? -1 : tet_of_facet[neighbour->id];
     }
   }
-  VRREG_THROW_UNLESS(!out.vertices.empty(), "Delaunay tetrahedralization of "
-                                                << n << " fiducials gave no tetrahedra");
+  VRREG_THROW_UNLESS(!out.vertices.empty(),
+                     "Delaunay tetrahedralization of " << n << " fiducials gave no tetrahedra");
   return out;
 }
 

@@ -1,9 +1,10 @@
+#include "vrreg/correction/grid.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "vrreg/core/units.hpp"
-#include "vrreg/correction/grid.hpp"
 
 namespace vrreg {
 namespace {
@@ -11,10 +12,14 @@ namespace {
 std::string ordinal(int n) {
   if (n % 100 >= 11 && n % 100 <= 13) return std::to_string(n) + "th";
   switch (n % 10) {
-    case 1: return std::to_string(n) + "st";
-    case 2: return std::to_string(n) + "nd";
-    case 3: return std::to_string(n) + "rd";
-    default: return std::to_string(n) + "th";
+    case 1:
+      return std::to_string(n) + "st";
+    case 2:
+      return std::to_string(n) + "nd";
+    case 3:
+      return std::to_string(n) + "rd";
+    default:
+      return std::to_string(n) + "th";
   }
 }
 
@@ -42,8 +47,8 @@ Stencil grid_stencil(const GridLayout& grid, const Eigen::Vector3d& point_robot_
     const double t = (point_robot_m(axis) - grid.origin_m(axis)) / grid.spacing_m(axis);
     const double slack = tolerance_m / grid.spacing_m(axis);
     if (!(t >= -slack && t <= last + slack)) {  // also catches NaN
-      return Stencil{.fiducial = {}, .weight = {}, .size = 0,
-                     .status = StencilStatus::kOutsideGrid};
+      return Stencil{
+          .fiducial = {}, .weight = {}, .size = 0, .status = StencilStatus::kOutsideGrid};
     }
     const double clamped = std::clamp(t, 0.0, last);
     cell[a] = std::min(static_cast<int>(std::floor(clamped)), grid.nodes[a] - 2);

@@ -52,7 +52,8 @@ std::optional<AxisLattice> fit_axis(const ConstPoints3Ref& points_m, int axis, d
     return std::nullopt;
   }
   double min_gap = levels[1] - levels[0];
-  for (std::size_t i = 2; i < levels.size(); ++i) min_gap = std::min(min_gap, levels[i] - levels[i - 1]);
+  for (std::size_t i = 2; i < levels.size(); ++i)
+    min_gap = std::min(min_gap, levels[i] - levels[i - 1]);
   const double span = levels.back() - levels.front();
   if (span / min_gap > static_cast<double>(kMaxLevels)) {
     why << kAxisName[axis] << " levels span " << span / min_gap << " times their smallest gap";
@@ -61,7 +62,8 @@ std::optional<AxisLattice> fit_axis(const ConstPoints3Ref& points_m, int axis, d
   }
   // Least-squares lattice level_i = origin + k_i spacing through the rounded indices k_i.
   std::vector<double> k(levels.size());
-  for (std::size_t i = 0; i < levels.size(); ++i) k[i] = std::round((levels[i] - levels[0]) / min_gap);
+  for (std::size_t i = 0; i < levels.size(); ++i)
+    k[i] = std::round((levels[i] - levels[0]) / min_gap);
   const double n = static_cast<double>(levels.size());
   const double k_mean = std::accumulate(k.begin(), k.end(), 0.0) / n;
   const double level_mean = std::accumulate(levels.begin(), levels.end(), 0.0) / n;
@@ -137,11 +139,12 @@ GridDetection detect_grid(const ConstPoints3Ref& fiducials_robot_m, double toler
         return out;
       }
     }
-    const auto [it, inserted] = node_fiducial.emplace(index[0] + nx * (index[1] + ny * index[2]), j);
+    const auto [it, inserted] =
+        node_fiducial.emplace(index[0] + nx * (index[1] + ny * index[2]), j);
     if (!inserted) {
       std::ostringstream why;
-      why << "fiducials " << it->second << " and " << j << " share grid node (" << index[0]
-          << ", " << index[1] << ", " << index[2] << ")";
+      why << "fiducials " << it->second << " and " << j << " share grid node (" << index[0] << ", "
+          << index[1] << ", " << index[2] << ")";
       out.reason = why.str();
       return out;
     }
@@ -186,16 +189,17 @@ GridDetection detect_grid(const ConstPoints3Ref& fiducials_robot_m, double toler
       grid.nodes = count;
       grid.n_fiducials = fiducials_robot_m.cols();
       for (std::size_t a = 0; a < 3; ++a) {
-        grid.origin_m(static_cast<Eigen::Index>(a)) = axes[a].origin_m + offset[a] * axes[a].spacing_m;
+        grid.origin_m(static_cast<Eigen::Index>(a)) =
+            axes[a].origin_m + offset[a] * axes[a].spacing_m;
         grid.spacing_m(static_cast<Eigen::Index>(a)) = stride * axes[a].spacing_m;
       }
       grid.fiducial.reserve(static_cast<std::size_t>(-neg_total));
       for (int k = 0; k < count[2]; ++k) {
         for (int j = 0; j < count[1]; ++j) {
           for (int i = 0; i < count[0]; ++i) {
-            grid.fiducial.push_back(node_fiducial.at(
-                (offset[0] + i * stride) +
-                nx * ((offset[1] + j * stride) + ny * (offset[2] + k * stride))));
+            grid.fiducial.push_back(
+                node_fiducial.at((offset[0] + i * stride) +
+                                 nx * ((offset[1] + j * stride) + ny * (offset[2] + k * stride))));
           }
         }
       }
@@ -207,8 +211,8 @@ GridDetection detect_grid(const ConstPoints3Ref& fiducials_robot_m, double toler
   why << "the " << axes[0].size() << " x " << axes[1].size() << " x " << axes[2].size()
       << " lattice of " << units::m_to_mm(axes[0].spacing_m) << " x "
       << units::m_to_mm(axes[1].spacing_m) << " x " << units::m_to_mm(axes[2].spacing_m)
-      << " mm holds " << node_fiducial.size() << " fiducials on "
-      << nx * ny * axes[2].size() << " nodes, and no every-s-th sub-lattice is complete";
+      << " mm holds " << node_fiducial.size() << " fiducials on " << nx * ny * axes[2].size()
+      << " nodes, and no every-s-th sub-lattice is complete";
   if (budget <= 0) why << " (search stopped after " << kMaxNodeChecks << " node checks)";
   out.reason = why.str();
   return out;

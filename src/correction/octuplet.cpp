@@ -20,14 +20,14 @@ OctupletStencils::OctupletStencils(const ConstPoints3Ref& fiducials_robot_m, dou
   VRREG_THROW_UNLESS(std::isfinite(cube_edge_m) && cube_edge_m > 0.0,
                      "octuplet interpolation needs a cube edge > 0 (got "
                          << units::m_to_mm(cube_edge_m) << " mm): set --cube-mm");
-  VRREG_THROW_UNLESS(std::isfinite(tolerance_m) && tolerance_m > 0.0 &&
-                         tolerance_m < 0.25 * cube_edge_m,
-                     "octuplet match tolerance must be > 0 and < a/4 (got "
-                         << units::m_to_mm(tolerance_m) << " mm for a = "
-                         << units::m_to_mm(cube_edge_m) << " mm)");
-  VRREG_THROW_UNLESS(fiducials_robot_m.cols() >= 8,
-                     "octuplet interpolation needs at least 8 fiducials, got "
-                         << fiducials_robot_m.cols());
+  VRREG_THROW_UNLESS(
+      std::isfinite(tolerance_m) && tolerance_m > 0.0 && tolerance_m < 0.25 * cube_edge_m,
+      "octuplet match tolerance must be > 0 and < a/4 (got "
+          << units::m_to_mm(tolerance_m) << " mm for a = " << units::m_to_mm(cube_edge_m)
+          << " mm)");
+  VRREG_THROW_UNLESS(
+      fiducials_robot_m.cols() >= 8,
+      "octuplet interpolation needs at least 8 fiducials, got " << fiducials_robot_m.cols());
   VRREG_THROW_UNLESS(fiducials_robot_m.allFinite(),
                      "octuplet interpolation: non-finite fiducial coordinates");
   impl_ = std::make_unique<Impl>(fiducials_robot_m);
@@ -53,8 +53,8 @@ Stencil OctupletStencils::stencil(const Eigen::Vector3d& target_robot_nominal_m)
     const Eigen::Vector3d corner_m = target_robot_nominal_m + offset;
     const Eigen::Index nearest = impl_->index.nearest(corner_m);
     if ((impl_->index.points().col(nearest) - corner_m).norm() > tolerance_m_) {
-      return Stencil{.fiducial = {}, .weight = {}, .size = 0,
-                     .status = StencilStatus::kMissingCorner};
+      return Stencil{
+          .fiducial = {}, .weight = {}, .size = 0, .status = StencilStatus::kMissingCorner};
     }
     out.fiducial[corner] = nearest;
     out.weight[corner] = 0.125;

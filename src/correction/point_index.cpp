@@ -1,7 +1,6 @@
 #include "point_index.hpp"
 
 #include <cstddef>
-
 #include <nanoflann.hpp>
 
 namespace vrreg::detail {
@@ -22,8 +21,8 @@ struct Cloud {
   }
 };
 
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>,
-                                                 Cloud, 3, std::size_t>;
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud,
+                                                 3, std::size_t>;
 
 }  // namespace
 

@@ -11,15 +11,14 @@ Points3 fiducial_corrections(const RigidTransform& T_robot_sensor,
                              const ConstPoints3Ref& fiducials_robot_m) {
   VRREG_THROW_UNLESS(fiducials_sensor_m.cols() == fiducials_robot_m.cols(),
                      "fiducial corrections need the same fiducials in both frames: "
-                         << fiducials_sensor_m.cols() << " sensor vs "
-                         << fiducials_robot_m.cols() << " robot positions");
+                         << fiducials_sensor_m.cols() << " sensor vs " << fiducials_robot_m.cols()
+                         << " robot positions");
   VRREG_THROW_UNLESS(fiducials_sensor_m.allFinite() && fiducials_robot_m.allFinite(),
                      "fiducial corrections: non-finite fiducial coordinates");
-  VRREG_THROW_UNLESS(T_robot_sensor.rotation.allFinite() &&
-                         T_robot_sensor.translation_m.allFinite() &&
-                         std::isfinite(T_robot_sensor.scale) && T_robot_sensor.scale > 0.0,
-                     "fiducial corrections: the transform is not finite (scale "
-                         << T_robot_sensor.scale << ")");
+  VRREG_THROW_UNLESS(
+      T_robot_sensor.rotation.allFinite() && T_robot_sensor.translation_m.allFinite() &&
+          std::isfinite(T_robot_sensor.scale) && T_robot_sensor.scale > 0.0,
+      "fiducial corrections: the transform is not finite (scale " << T_robot_sensor.scale << ")");
   // Eq. 6: epsilon_j = R_inv Y_j + tau_inv - X_j with R_inv = R'/s, tau_inv = -R' tau / s.
   const RigidTransform T_sensor_robot = T_robot_sensor.inverse();
   Points3 corrections_sensor_m(3, fiducials_sensor_m.cols());
@@ -32,10 +31,14 @@ Points3 fiducial_corrections(const RigidTransform& T_robot_sensor,
 
 const char* to_string(StencilStatus status) {
   switch (status) {
-    case StencilStatus::kOk: return "ok";
-    case StencilStatus::kOutsideGrid: return "outside grid";
-    case StencilStatus::kOutsideHull: return "outside hull";
-    case StencilStatus::kMissingCorner: return "missing corner";
+    case StencilStatus::kOk:
+      return "ok";
+    case StencilStatus::kOutsideGrid:
+      return "outside grid";
+    case StencilStatus::kOutsideHull:
+      return "outside hull";
+    case StencilStatus::kMissingCorner:
+      return "missing corner";
   }
   return "unknown";
 }

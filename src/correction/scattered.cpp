@@ -38,7 +38,8 @@ struct Evaluation {
 }  // namespace
 
 struct ScatteredStencils::Impl {
-  Impl(const ConstPoints3Ref& points_m, double tolerance) : index(points_m), tolerance_m(tolerance) {}
+  Impl(const ConstPoints3Ref& points_m, double tolerance)
+      : index(points_m), tolerance_m(tolerance) {}
 
   detail::PointIndex index;
   double tolerance_m;
@@ -197,9 +198,9 @@ struct ScatteredStencils::Impl {
 ScatteredStencils::ScatteredStencils(const ConstPoints3Ref& fiducials_robot_m, double tolerance_m) {
   VRREG_THROW_UNLESS(std::isfinite(tolerance_m) && tolerance_m > 0.0,
                      "scattered interpolation needs a tolerance > 0, got " << tolerance_m << " m");
-  VRREG_THROW_UNLESS(fiducials_robot_m.cols() >= 4,
-                     "scattered interpolation needs at least 4 fiducials, got "
-                         << fiducials_robot_m.cols());
+  VRREG_THROW_UNLESS(
+      fiducials_robot_m.cols() >= 4,
+      "scattered interpolation needs at least 4 fiducials, got " << fiducials_robot_m.cols());
   VRREG_THROW_UNLESS(fiducials_robot_m.allFinite(),
                      "scattered interpolation: non-finite fiducial coordinates");
   impl_ = std::make_unique<Impl>(fiducials_robot_m, tolerance_m);
@@ -211,8 +212,8 @@ ScatteredStencils::ScatteredStencils(const ConstPoints3Ref& fiducials_robot_m, d
                                          << " mm): use one arm configuration per model");
   const Points3& points_m = impl_->index.points();
   impl_->mesh = detail::make_tet_mesh(points_m, delaunay_tetrahedralization(points_m));
-  VRREG_THROW_UNLESS(impl_->mesh.first_solid >= 0,
-                     "the Delaunay tetrahedra of the " << points_m.cols()
+  VRREG_THROW_UNLESS(impl_->mesh.first_solid >= 0, "the Delaunay tetrahedra of the "
+                                                       << points_m.cols()
                                                        << " fiducials are all flat");
 }
 
@@ -230,8 +231,8 @@ Stencil ScatteredStencils::stencil(const Eigen::Vector3d& point_robot_m, LocateS
 
 std::string ScatteredStencils::describe() const {
   std::ostringstream out;
-  out << "scattered, Delaunay of " << impl_->index.points().cols() << " fiducials: "
-      << n_tetrahedra() << " tetrahedra (" << n_flat() << " flat)";
+  out << "scattered, Delaunay of " << impl_->index.points().cols()
+      << " fiducials: " << n_tetrahedra() << " tetrahedra (" << n_flat() << " flat)";
   return out.str();
 }
 

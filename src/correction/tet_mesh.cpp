@@ -1,11 +1,10 @@
 #include "tet_mesh.hpp"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/Geometry>
-#include <Eigen/LU>
 
 namespace vrreg::detail {
 namespace {

@@ -1,10 +1,9 @@
 #pragma once
 // Geometry of a Delaunay tetrahedralization for point location: barycentric maps, flat
 // tetrahedra, outward hull planes.
+#include <Eigen/Core>
 #include <array>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/delaunay.hpp"

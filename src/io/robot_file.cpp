@@ -17,9 +17,9 @@
 namespace vrreg::io {
 namespace {
 
-using nlohmann::json;
 using kinematics::DhRow;
 using kinematics::JointLimits;
+using nlohmann::json;
 
 // Validating reader over a RobotDocument: every error names the file, line and key path.
 class Reader {
@@ -120,8 +120,8 @@ class Reader {
       const double error = kinematics::rotation_error(r);
       if (!(error <= 1e-6)) {
         std::ostringstream msg;
-        msg << "not a rotation matrix (max |R^T R - I| = " << error << ", det = "
-            << r.determinant() << ")";
+        msg << "not a rotation matrix (max |R^T R - I| = " << error << ", det = " << r.determinant()
+            << ")";
         fail(rpath, msg.str());
       }
       t.linear() = r;
@@ -138,8 +138,8 @@ class Reader {
     const auto required = [&](const std::string& base, bool angle) {
       const std::optional<double> v = unit_number(value, path, base, angle);
       if (!v) {
-        fail(path, "missing " + base + (angle ? "_rad or " + base + "_deg"
-                                              : "_m or " + base + "_mm"));
+        fail(path,
+             "missing " + base + (angle ? "_rad or " + base + "_deg" : "_m or " + base + "_mm"));
       }
       return *v;
     };
@@ -181,9 +181,9 @@ kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std:
   const json& root = doc.root;
   if (root.is_null()) r.fail("", "empty robot file (expected a DH table under \"dh\")");
   r.require_object(root, "");
-  r.allow_keys(root, "",
-               {"format", "name", "family", "dh", "joint_limits_rad", "joint_limits_deg", "tool",
-                "base"});
+  r.allow_keys(
+      root, "",
+      {"format", "name", "family", "dh", "joint_limits_rad", "joint_limits_deg", "tool", "base"});
   if (root.contains("format") && root.at("format") != "vrreg-robot") {
     r.fail("format", "expected \"vrreg-robot\", got " + root.at("format").dump());
   }
@@ -214,8 +214,7 @@ kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std:
     kinematics::SerialChain chain(name, std::move(rows), std::move(limits), base, tool);
     if (root.contains("family")) {
       const json& family = root.at("family");
-      if (!family.is_string() ||
-          (family != "ur" && family != "lwr" && family != "generic")) {
+      if (!family.is_string() || (family != "ur" && family != "lwr" && family != "generic")) {
         r.fail("family", "expected \"ur\", \"lwr\" or \"generic\", got " + family.dump());
       }
       if (family.get<std::string>() != kinematics::to_string(chain.family())) {
@@ -233,7 +232,8 @@ kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std:
 }
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
@@ -243,7 +243,7 @@ kinematics::SerialChain parse_robot_file(const std::string& text, const std::str
   if (syntax == RobotFileSyntax::kAuto) {
     const std::size_t first = text.find_first_not_of(" \t\r\n");
     syntax = first != std::string::npos && text[first] == '{' ? RobotFileSyntax::kJson
-                                                               : RobotFileSyntax::kYaml;
+                                                              : RobotFileSyntax::kYaml;
   }
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw FileError(source, 0, "empty robot file (expected a DH table under \"dh\")");

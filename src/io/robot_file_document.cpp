@@ -1,9 +1,9 @@
 #include "robot_file_document.hpp"
 
+#include <yaml-cpp/yaml.h>
+
 #include <algorithm>
 #include <cstdlib>
-
-#include <yaml-cpp/yaml.h>
 
 #include "vrreg/io/file_error.hpp"
 

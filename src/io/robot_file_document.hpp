@@ -3,9 +3,8 @@
 // syntax records one (YAML), so that errors can name "file:line: dh[2].d_m: ...".
 #include <cstddef>
 #include <map>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace vrreg::io::detail {
 

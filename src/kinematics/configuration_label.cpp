@@ -5,8 +5,7 @@
 namespace vrreg::kinematics {
 
 ConfigurationLabel::ConfigurationLabel(ArmKind kind, int index) : kind_(kind) {
-  VRREG_THROW_UNLESS(index >= 0 && index < 8,
-                     "configuration index must be in 0..7, got " << index);
+  VRREG_THROW_UNLESS(index >= 0 && index < 8, "configuration index must be in 0..7, got " << index);
   bits_ = static_cast<std::uint8_t>(index);
 }
 

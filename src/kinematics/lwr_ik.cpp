@@ -19,9 +19,8 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
   VRREG_THROW_UNLESS(std::isfinite(psi_rad),
                      "LWR inverse kinematics: arm angle psi is not finite (" << psi_rad << ")");
   const Eigen::Isometry3d t = chain.dh0_flange_from_base_tcp(T_base_tcp);
-  const detail::LwrPoseFrame frame =
-      detail::lwr_pose_frame(g, t.linear(), t.translation(), options.singular_tolerance,
-                             options.reach_tolerance_m);
+  const detail::LwrPoseFrame frame = detail::lwr_pose_frame(
+      g, t.linear(), t.translation(), options.singular_tolerance, options.reach_tolerance_m);
   IkResult result;
   if (!frame.reachable) {
     result.message = frame.message;

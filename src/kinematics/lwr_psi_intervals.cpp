@@ -26,8 +26,8 @@ struct Harmonic {
   Harmonic operator-(const Harmonic& o) const { return {a - o.a, b - o.b, c - o.c}; }
 };
 
-Harmonic entry(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, const Eigen::Matrix3d& c,
-               int i, int j) {
+Harmonic entry(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, const Eigen::Matrix3d& c, int i,
+               int j) {
   return {a(i, j), b(i, j), c(i, j)};
 }
 

@@ -34,15 +34,14 @@ void pm_columns(double a, double b, Eigen::Vector3d& col0, Eigen::Vector3d& col1
   col1 << -sa, ca, 0.0;
 }
 
-// Solves R = P(a) M(b) Rz(c) (or M in place of Rz: only column 0 of the last factor is used,
-// and it is (cos c, sin c, 0) for both) for a, b > 0 branch, c last from a, b as computed.
-// `free_c` is used when sin b ~ 0. Returns true when singular.
+// Solves R = P(a) M(b) X(c) for the branch b in [0, pi], where X(c) is Rz(c) or M(c): both have
+// column 0 = (cos c, sin c, 0). Uses column 0 of R and the z axis of P(a) M(b), which is
+// (-cos a sin b, -sin a sin b, cos b) and must be passed as column 2 of `r` (for X = Rz it is
+// column 2 of R, for X = M it is -column 1). c comes last, from a and b as computed.
+// `free_c` is c at a singularity (sin b ~ 0). Returns true when singular.
 bool solve_pm(const Eigen::Matrix3d& r, double tolerance, double free_c, double& a, double& b,
               double& c) {
-  // Column 2 of P(a) M(b) is (-ca sb, -sa sb, cb) and of R is the same column, times the last
-  // factor's column-2 image: for Rz it is column 2, for M(c) it is -column 1.
-  // Callers pass R with that column already in place as `r.col(2)` (see below).
-  const double sb_abs = std::hypot(r(0, 2), r(1, 2));
+  const double sb_abs = std::sqrt(r(0, 2) * r(0, 2) + r(1, 2) * r(1, 2));
   b = std::atan2(sb_abs, r(2, 2));
   const bool singular = sb_abs <= tolerance;
   if (!singular) {
@@ -99,18 +98,19 @@ LwrPoseFrame lwr_pose_frame(const LwrGeometry& g, const Eigen::Matrix3d& r,
     return f;
   }
   f.reachable = true;
+  f.offset3 = g.offset[2];
+  f.offset7 = g.offset[6];
   f.u = x_sw / length;
   // theta4 (|W - S|^2 = d_se^2 + d_ew^2 + 2 d_se d_ew cos theta4), base configuration >= 0.
-  const double c4 = std::clamp((length * length - g.d_se * g.d_se - g.d_ew * g.d_ew) /
-                                   (2.0 * g.d_se * g.d_ew),
-                               -1.0, 1.0);
+  const double c4 = std::clamp(
+      (length * length - g.d_se * g.d_se - g.d_ew * g.d_ew) / (2.0 * g.d_se * g.d_ew), -1.0, 1.0);
   const double s4 = std::sqrt(std::max(0.0, 1.0 - c4 * c4));
   f.theta4 = std::atan2(s4, c4);
   if (1.0 - std::abs(c4) <= singular_tolerance) f.singular |= kElbowSingular;
   f.r34 << c4, 0.0, s4, s4, 0.0, -c4, 0.0, 1.0, 0.0;  // P(theta4)
 
   // Reference elbow: theta3 = 0. Then W - S = (c1 a, s1 a, b) with (a, b) = Rot(theta2) (X, Y).
-  const double horizontal = std::hypot(x_sw.x(), x_sw.y());
+  const double horizontal = std::sqrt(x_sw.x() * x_sw.x() + x_sw.y() * x_sw.y());
   double theta1 = 0.0;
   double a = x_sw.x();  // stated choice theta1 = 0 when W is on the joint-1 axis
   if (horizontal <= singular_tolerance * length) {
@@ -134,8 +134,7 @@ LwrPoseFrame lwr_pose_frame(const LwrGeometry& g, const Eigen::Matrix3d& r,
   return f;
 }
 
-LwrBaseSolution lwr_base_solution(const LwrPoseFrame& f, double psi_rad,
-                                  const IkOptions& options) {
+LwrBaseSolution lwr_base_solution(const LwrPoseFrame& f, double psi_rad, const IkOptions& options) {
   LwrBaseSolution s{};
   s.singular = f.singular;
   const double sp = std::sin(psi_rad), cp = std::cos(psi_rad);
@@ -143,15 +142,15 @@ LwrBaseSolution lwr_base_solution(const LwrPoseFrame& f, double psi_rad,
   // R03 = P(t1) M(t2) M(t3): its column 1 is -(column 2 of P M); pass it as column 2.
   Eigen::Matrix3d r03_view;
   r03_view << r03.col(0), r03.col(2), -r03.col(1);
-  // theta3 free value when singular (the stated choice): options.singular_free_angle_rad.
-  if (solve_pm(r03_view, options.singular_tolerance, options.singular_free_angle_rad, s.theta[0],
-               s.theta[1], s.theta[2])) {
+  // The stated choice at a singularity: joint 3 (or 7) = options.singular_free_angle_rad.
+  if (solve_pm(r03_view, options.singular_tolerance, options.singular_free_angle_rad + f.offset3,
+               s.theta[0], s.theta[1], s.theta[2])) {
     s.singular |= kShoulderSingular;
   }
   s.theta[3] = f.theta4;
   const Eigen::Matrix3d r47 = (r03 * f.r34).transpose() * f.r;
-  if (solve_pm(r47, options.singular_tolerance, options.singular_free_angle_rad, s.theta[4],
-               s.theta[5], s.theta[6])) {
+  if (solve_pm(r47, options.singular_tolerance, options.singular_free_angle_rad + f.offset7,
+               s.theta[4], s.theta[5], s.theta[6])) {
     s.singular |= kWristSingular;
   }
   return s;

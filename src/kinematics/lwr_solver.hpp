@@ -1,10 +1,9 @@
 #pragma once
 // Internal: the pieces of the LWR 4+ arm-angle IK shared by the solver, the inverse map and the
 // feasible-psi search. All angles here are DH angles theta = q + offset.
+#include <Eigen/Core>
 #include <cstdint>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "vrreg/kinematics/ik_result.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
@@ -32,7 +31,8 @@ struct LwrPoseFrame {
   double theta4 = 0.0;  ///< elbow angle of the base configuration, >= 0
   Eigen::Matrix3d r34;  ///< rotation of joint 4 at theta4
   Eigen::Matrix3d as, bs, cs;
-  Eigen::Matrix3d r03_reference;  ///< psi = 0
+  Eigen::Matrix3d r03_reference;           ///< psi = 0
+  double offset3 = 0.0, offset7 = 0.0;     ///< joint offsets of joints 3 and 7 [rad]
   std::uint8_t singular = kNoSingularity;  ///< kElbowSingular, kArmAngleSingular
 };
 

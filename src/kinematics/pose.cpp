@@ -22,9 +22,10 @@ Eigen::Vector3d rpy_from_rotation(const Eigen::Matrix3d& r) {
   if (cos_pitch < 1e-12) {
     // Gimbal lock: only yaw -+ roll is defined; take roll = 0.
     const double yaw = std::atan2(-r(0, 1), r(1, 1));
-    return {0.0, pitch, yaw};
+    return {0.0, pitch + 0.0, yaw + 0.0};
   }
-  return {std::atan2(r(2, 1), r(2, 2)), pitch, std::atan2(r(1, 0), r(0, 0))};
+  // "+ 0.0" turns -0 into +0, so that printed angles never read "-0".
+  return {std::atan2(r(2, 1), r(2, 2)) + 0.0, pitch + 0.0, std::atan2(r(1, 0), r(0, 0)) + 0.0};
 }
 
 double rotation_error(const Eigen::Matrix3d& rotation) {
@@ -40,8 +41,8 @@ void check_pose(const Eigen::Isometry3d& pose, const char* what, double toleranc
   const Eigen::Matrix3d r = pose.linear();
   const double error = rotation_error(r);
   VRREG_THROW_UNLESS(error <= tolerance, what << ": not a rotation (max |R^T R - I| = " << error
-                                              << ", det = " << r.determinant()
-                                              << "; tolerance " << tolerance << ")");
+                                              << ", det = " << r.determinant() << "; tolerance "
+                                              << tolerance << ")");
   const auto bottom = pose.matrix().row(3);
   VRREG_THROW_UNLESS(bottom(0) == 0.0 && bottom(1) == 0.0 && bottom(2) == 0.0 && bottom(3) == 1.0,
                      what << ": last row of the homogeneous matrix is not [0 0 0 1]");

@@ -27,9 +27,7 @@ SerialChain ur3() { return make_ur("ur3", 0.1519, -0.24365, -0.21325, 0.11235, 0
 
 SerialChain ur5() { return make_ur("ur5", 0.089159, -0.425, -0.39225, 0.10915, 0.09465, 0.0823); }
 
-SerialChain ur10() {
-  return make_ur("ur10", 0.1273, -0.612, -0.5723, 0.163941, 0.1157, 0.0922);
-}
+SerialChain ur10() { return make_ur("ur10", 0.1273, -0.612, -0.5723, 0.163941, 0.1157, 0.0922); }
 
 SerialChain ur5e() { return make_ur("ur5e", 0.1625, -0.425, -0.3922, 0.1333, 0.0997, 0.0996); }
 

@@ -12,9 +12,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-bool is_identity(const Eigen::Isometry3d& t) {
-  return t.matrix() == Eigen::Matrix4d::Identity();
-}
+bool is_identity(const Eigen::Isometry3d& t) { return t.matrix() == Eigen::Matrix4d::Identity(); }
 
 bool near(double value, double expected, double tolerance) {
   return std::abs(value - expected) <= tolerance;
@@ -68,33 +66,32 @@ ChainFamily detect_family(const std::vector<DhRow>& rows, double tolerance) {
   return ChainFamily::kGeneric;
 }
 
-SerialChain::SerialChain(std::string name, std::vector<DhRow> rows,
-                         std::vector<JointLimits> limits, const Eigen::Isometry3d& T_base_dh0,
-                         const Eigen::Isometry3d& T_flange_tcp)
+SerialChain::SerialChain(std::string name, std::vector<DhRow> rows, std::vector<JointLimits> limits,
+                         const Eigen::Isometry3d& T_base_dh0, const Eigen::Isometry3d& T_flange_tcp)
     : name_(std::move(name)),
       rows_(std::move(rows)),
       limits_(std::move(limits)),
       T_base_dh0_(T_base_dh0),
       T_flange_tcp_(T_flange_tcp) {
   VRREG_THROW_UNLESS(!rows_.empty() && rows_.size() <= static_cast<std::size_t>(kMaxJoints),
-                     "robot '" << name_ << "': a chain needs 1 to " << kMaxJoints
-                               << " joints, got " << rows_.size());
-  VRREG_THROW_UNLESS(limits_.size() == rows_.size(),
-                     "robot '" << name_ << "': " << rows_.size() << " DH rows but "
-                               << limits_.size() << " joint limits");
+                     "robot '" << name_ << "': a chain needs 1 to " << kMaxJoints << " joints, got "
+                               << rows_.size());
+  VRREG_THROW_UNLESS(limits_.size() == rows_.size(), "robot '" << name_ << "': " << rows_.size()
+                                                               << " DH rows but " << limits_.size()
+                                                               << " joint limits");
   for (std::size_t i = 0; i < rows_.size(); ++i) {
     const DhRow& r = rows_[i];
-    VRREG_THROW_UNLESS(std::isfinite(r.a_m) && std::isfinite(r.alpha_rad) &&
-                           std::isfinite(r.d_m) && std::isfinite(r.theta_offset_rad),
+    VRREG_THROW_UNLESS(std::isfinite(r.a_m) && std::isfinite(r.alpha_rad) && std::isfinite(r.d_m) &&
+                           std::isfinite(r.theta_offset_rad),
                        "robot '" << name_ << "': DH row " << i + 1 << " has a non-finite value (a="
                                  << r.a_m << ", alpha=" << r.alpha_rad << ", d=" << r.d_m
                                  << ", theta_offset=" << r.theta_offset_rad << ")");
     const JointLimits& l = limits_[i];
-    VRREG_THROW_UNLESS(std::isfinite(l.lower_rad) && std::isfinite(l.upper_rad) &&
-                           l.lower_rad < l.upper_rad,
-                       "robot '" << name_ << "': joint " << i + 1
-                                 << " limits must be finite with lower < upper, got ["
-                                 << l.lower_rad << ", " << l.upper_rad << "] rad");
+    VRREG_THROW_UNLESS(
+        std::isfinite(l.lower_rad) && std::isfinite(l.upper_rad) && l.lower_rad < l.upper_rad,
+        "robot '" << name_ << "': joint " << i + 1
+                  << " limits must be finite with lower < upper, got [" << l.lower_rad << ", "
+                  << l.upper_rad << "] rad");
   }
   const std::string base_what = "robot '" + name_ + "' base transform";
   const std::string tool_what = "robot '" + name_ + "' tool transform";

@@ -7,6 +7,7 @@
 #include "vrreg/kinematics/ur_ik.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -45,16 +46,15 @@ UrGeometry ur_geometry(const SerialChain& chain, const char* what) {
   return g;
 }
 
-// Angle of vector u minus angle of vector v, as one atan2.
-double angle_difference(double ux, double uy, double vx, double vy) {
-  return std::atan2(vx * uy - vy * ux, vx * ux + vy * uy);
-}
-
 struct Branch {
   double theta[6];
-  bool shoulder_left, elbow_up, wrist_flipped;
   std::uint8_t singular;
+  bool present;
 };
+
+// Elbow (frame-2 origin) above the line from the shoulder to o3 = (px, py) in the arm plane of
+// frame 1 (y1 up): px * (-a2 a3 sin q3) > 0; px = 0 counts as positive (a measure-zero tie).
+bool elbow_up(double px, double cross) { return (px >= 0.0 ? cross : -cross) > 0.0; }
 
 std::string mm(double m) {
   std::ostringstream s;
@@ -77,7 +77,7 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
   const double tol = options.singular_tolerance;
 
   IkResult result;
-  Branch branches[8];
+  Branch branches[8] = {};  // by configuration index
   int n_branches = 0;
   std::uint8_t pose_flags = kNoSingularity;
 
@@ -86,12 +86,14 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
   const double r2 = o5.x() * o5.x() + o5.y() * o5.y();
   const double radius = std::sqrt(r2);
   if (radius < std::abs(g.d4) - options.reach_tolerance_m) {
-    result.message = "the wrist centre is " + mm(radius) + " from the joint-1 axis, closer than d4 = " +
-                     mm(std::abs(g.d4)) + ": inside the cylinder no configuration reaches";
+    result.message = "the wrist centre is " + mm(radius) +
+                     " from the joint-1 axis, closer than d4 = " + mm(std::abs(g.d4)) +
+                     ": inside the cylinder no configuration reaches";
     return result;
   }
   const double h_abs = std::sqrt(std::max(r2 - g.d4 * g.d4, 0.0));  // reach in the arm plane
-  // Found through a square root (like q3 below): test cos^2 of the angle, not |sin| (see IkOptions).
+  // Found through a square root (like q3 below): test cos^2 of the angle, not |sin| (see
+  // IkOptions).
   const bool shoulder_singular = h_abs * h_abs <= tol * r2;
   if (shoulder_singular) pose_flags |= kShoulderSingular;
   const double cos_phi = radius > 0 ? o5.x() / radius : 1.0;
@@ -114,59 +116,69 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
     const double s1 = sin_phi * ca + cos_phi * sin_alpha;
     const Eigen::Vector3d z1(s1, -c1, 0.0);
     const double zx = z1.dot(x6), zy = z1.dot(y6), c5 = z1.dot(z6);
-    const double s5_abs = std::hypot(zx, zy);
+    const double s5_abs = std::sqrt(zx * zx + zy * zy);
     const bool wrist_singular = s5_abs <= tol;
     if (wrist_singular) pose_flags |= kWristSingular;
 
+    const double theta5_abs = std::atan2(s5_abs, c5);
+    double theta6_noflip = options.singular_free_angle_rad + g.offset[5];
+    double s6_noflip = 0.0, c6_noflip = 1.0;
+    if (wrist_singular) {
+      s6_noflip = std::sin(theta6_noflip);
+      c6_noflip = std::cos(theta6_noflip);
+    } else {
+      s6_noflip = -zy / s5_abs;
+      c6_noflip = zx / s5_abs;
+      theta6_noflip = std::atan2(-zy, zx);
+    }
+
     for (int wrist = 0; wrist < (wrist_singular ? 1 : 2); ++wrist) {
-      const double s5 = wrist == 0 ? s5_abs : -s5_abs;
-      const double theta5 = std::atan2(s5, c5);
-      double theta6, s6, c6;
-      if (wrist_singular) {
-        theta6 = options.singular_free_angle_rad + g.offset[5];
-        s6 = std::sin(theta6);
-        c6 = std::cos(theta6);
-      } else {
-        s6 = -zy / s5;
-        c6 = zx / s5;
-        theta6 = std::atan2(s6, c6);
-      }
+      // The flipped wrist: q5 -> -q5, and z1 in the flange frame fixes q6 -> q6 + pi.
+      const double flip = wrist == 0 ? 1.0 : -1.0;
+      const double s5 = flip * s5_abs;
+      const double theta5 = flip * theta5_abs;
+      const double s6 = flip * s6_noflip, c6 = flip * c6_noflip;
+      const double theta6 = wrist == 0 ? theta6_noflip : theta6_noflip + kPi;
       // Frame 4: origin and x axis, then the planar problem in frame 1 (x1 horizontal, y1 up).
       const Eigen::Vector3d o4 = o5 + g.d5 * (s6 * x6 + c6 * y6);
       const Eigen::Vector3d x4 = c5 * c6 * x6 - c5 * s6 * y6 - s5 * z6;
       const double px = c1 * o4.x() + s1 * o4.y();
       const double py = o4.z() - g.d1;
       const double theta234 = std::atan2(x4.z(), c1 * x4.x() + s1 * x4.y());
-      const double reach = std::hypot(px, py);
+      const double reach = std::sqrt(px * px + py * py);
       if (reach > reach_max + options.reach_tolerance_m ||
           reach < reach_min - options.reach_tolerance_m) {
         worst_reach = reach;
         continue;
       }
-      const double c3 = std::clamp((px * px + py * py - g.a2 * g.a2 - g.a3 * g.a3) /
-                                       (2.0 * g.a2 * g.a3),
-                                   -1.0, 1.0);
+      const double c3 = std::clamp(
+          (px * px + py * py - g.a2 * g.a2 - g.a3 * g.a3) / (2.0 * g.a2 * g.a3), -1.0, 1.0);
       const double s3_abs = std::sqrt(std::max(0.0, 1.0 - c3 * c3));
       const bool elbow_singular = 1.0 - std::abs(c3) <= tol;
       if (elbow_singular) pose_flags |= kElbowSingular;
+      // (px, py) = Rot(q2) (a2 + a3 c3, a3 s3): q2 = angle(px, py) -+ angle(a2 + a3 c3, a3 |s3|).
+      const double theta3_abs = std::atan2(s3_abs, c3);
+      const double angle_p = std::atan2(py, px);
+      const double angle_b = std::atan2(g.a3 * s3_abs, g.a2 + g.a3 * c3);
 
       for (int elbow = 0; elbow < (elbow_singular ? 1 : 2); ++elbow) {
-        const double s3 = elbow == 0 ? s3_abs : -s3_abs;
-        const double theta3 = std::atan2(s3, c3);
-        const double theta2 = angle_difference(px, py, g.a2 + g.a3 * c3, g.a3 * s3);
+        const double sign3 = elbow == 0 ? 1.0 : -1.0;
+        const double theta3 = sign3 * theta3_abs;
+        const double theta2 = angle_p - sign3 * angle_b;
         const double theta4 = theta234 - theta2 - theta3;
-        Branch& b = branches[n_branches++];
+        const int index = (h_sign * g.d4 > 0.0 ? 4 : 0) |
+                          (elbow_up(px, -g.a2 * g.a3 * sign3 * s3_abs) ? 0 : 2) |
+                          (s5 < 0.0 ? 1 : 0);
+        Branch& b = branches[index];
+        assert(!b.present);
+        b.present = true;
+        ++n_branches;
         b.theta[0] = theta1;
         b.theta[1] = theta2;
         b.theta[2] = theta3;
         b.theta[3] = theta4;
         b.theta[4] = theta5;
         b.theta[5] = theta6;
-        // Labels as defined in ur_ik.hpp (elbow: frame-2 origin a2 (c2, s2) vs the line to o3).
-        b.shoulder_left = !(h_sign * g.d4 > 0.0);
-        const double cross = g.a2 * (px * std::sin(theta2) - py * std::cos(theta2));
-        b.elbow_up = px * cross > 0.0;
-        b.wrist_flipped = s5 < 0.0;
         b.singular = static_cast<std::uint8_t>((shoulder_singular ? kShoulderSingular : 0) |
                                                (wrist_singular ? kWristSingular : 0) |
                                                (elbow_singular ? kElbowSingular : 0));
@@ -182,25 +194,23 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
   }
 
   result.solutions.reserve(static_cast<std::size_t>(n_branches));
-  for (int k = 0; k < n_branches; ++k) {
-    const Branch& b = branches[k];
+  for (int index = 0; index < 8; ++index) {
+    const Branch& b = branches[index];
+    if (!b.present) continue;
     JointVector q(6);
-    for (int i = 0; i < 6; ++i) q(i) = wrap_angle(b.theta[i] - g.offset[i]);
     bool inside = true;
-    for (int i = 0; i < 6 && inside && options.apply_joint_limits; ++i) {
-      inside = detail::shift_joint(q(i), chain.limit(i), 0.0);
+    for (int i = 0; i < 6; ++i) {
+      q(i) = wrap_angle(b.theta[i] - g.offset[i]);
+      if (options.apply_joint_limits && inside) {
+        inside = detail::shift_joint(q(i), chain.limit(i), 0.0);
+      }
     }
     if (!inside) {
       ++result.n_outside_limits;
       continue;
     }
-    result.solutions.push_back(
-        {q, ConfigurationLabel::ur(b.shoulder_left, b.elbow_up, b.wrist_flipped), b.singular});
+    result.solutions.push_back({q, ConfigurationLabel(ArmKind::kUr, index), b.singular});
   }
-  std::sort(result.solutions.begin(), result.solutions.end(),
-            [](const IkSolution& a, const IkSolution& b) {
-              return a.config.index() < b.config.index();
-            });
   if (result.solutions.empty()) {
     result.status = IkStatus::kOutsideLimits;
     result.message = "all " + std::to_string(n_branches) + " solutions violate the joint limits";
@@ -231,10 +241,10 @@ ConfigurationLabel ur_configuration(const SerialChain& chain, const JointRef& q_
   const double t234 = t23 + theta[3];
   // Frame-3 origin in the arm plane of frame 1 (x1 horizontal, y1 up), relative to the shoulder.
   const double px = g.a2 * std::cos(theta[1]) + g.a3 * std::cos(t23);
-  const double py = g.a2 * std::sin(theta[1]) + g.a3 * std::sin(t23);
   const double h = px + g.d5 * std::sin(t234);  // reach of the wrist centre along x1
-  const double cross = g.a2 * (px * std::sin(theta[1]) - py * std::cos(theta[1]));
-  return ConfigurationLabel::ur(!(h * g.d4 > 0.0), px * cross > 0.0, std::sin(theta[4]) < 0.0);
+  // Elbow (a2 (c2, s2)) above the line to (px, py): px * cross > 0, cross = -a2 a3 sin q3.
+  return ConfigurationLabel::ur(!(h * g.d4 > 0.0), elbow_up(px, -g.a2 * g.a3 * std::sin(theta[2])),
+                                std::sin(theta[4]) < 0.0);
 }
 
 }  // namespace vrreg::kinematics

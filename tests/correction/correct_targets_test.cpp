@@ -1,10 +1,10 @@
 #include "vrreg/correction/correct_targets.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <gtest/gtest.h>
 
 #include "correction_fixtures.hpp"
 #include "vrreg/core/check.hpp"
@@ -28,7 +28,8 @@ Eigen::Vector3d robot_error_m(const Eigen::Vector3d& p) {
 }
 
 /// A model whose fiducials at fiducials_robot_m are measured with robot_error_m through T.
-RegistrationModel make_model(const Points3& fiducials_robot_m, const RigidTransform& T_robot_sensor) {
+RegistrationModel make_model(const Points3& fiducials_robot_m,
+                             const RigidTransform& T_robot_sensor) {
   RegistrationModel model;
   model.T_robot_sensor = T_robot_sensor;
   Points3 sensor(3, fiducials_robot_m.cols());
@@ -49,7 +50,8 @@ Points3 measure(const Points3& targets_robot_m, const RigidTransform& T_robot_se
   Points3 out(3, targets_robot_m.cols());
   const RigidTransform inv = T_robot_sensor.inverse();
   for (Eigen::Index i = 0; i < out.cols(); ++i) {
-    out.col(i) = inv.apply(Eigen::Vector3d(targets_robot_m.col(i) + robot_error_m(targets_robot_m.col(i))));
+    out.col(i) =
+        inv.apply(Eigen::Vector3d(targets_robot_m.col(i) + robot_error_m(targets_robot_m.col(i))));
   }
   return out;
 }
@@ -75,9 +77,11 @@ class CorrectTargets : public ::testing::Test {
 };
 
 TEST_F(CorrectTargets, AutoPicksTheGridOnA1AndAllMethodsImprove) {
-  const TargetCorrection grid = correct_targets(model, targets_sensor, Points3(3, 0), with(InterpolationMethod::kAuto));
+  const TargetCorrection grid =
+      correct_targets(model, targets_sensor, Points3(3, 0), with(InterpolationMethod::kAuto));
   EXPECT_EQ(grid.method_used, InterpolationMethod::kGrid);
-  EXPECT_EQ(grid.layout, "grid 6 x 7 x 5 nodes, 50 x 50 x 50 mm (every 2nd fiducial; 210 of 1167 fiducials)");
+  EXPECT_EQ(grid.layout,
+            "grid 6 x 7 x 5 nodes, 50 x 50 x 50 mm (every 2nd fiducial; 210 of 1167 fiducials)");
   const TargetCorrection octuplet = correct_targets(model, targets_sensor, a1.targets_robot_m,
                                                     with(InterpolationMethod::kOctuplet, 0.05));
   EXPECT_EQ(octuplet.method_used, InterpolationMethod::kOctuplet);
@@ -91,7 +95,8 @@ TEST_F(CorrectTargets, AutoPicksTheGridOnA1AndAllMethodsImprove) {
     EXPECT_EQ(a, b);
     for (const double w : grid.stencils[i].weight) EXPECT_NEAR(w, 0.125, 0.01);
   }
-  const TargetCorrection scattered = correct_targets(model, targets_sensor, Points3(3, 0), with(InterpolationMethod::kScattered));
+  const TargetCorrection scattered =
+      correct_targets(model, targets_sensor, Points3(3, 0), with(InterpolationMethod::kScattered));
   EXPECT_EQ(scattered.method_used, InterpolationMethod::kScattered);
   const double unc = rms_m(grid.uncorrected_robot_m, a1.targets_robot_m);
   for (const TargetCorrection* c : {&grid, &octuplet, &scattered}) {
@@ -100,10 +105,15 @@ TEST_F(CorrectTargets, AutoPicksTheGridOnA1AndAllMethodsImprove) {
     for (Eigen::Index i = 0; i < targets_sensor.cols(); ++i) {
       // Eq. 7, 8 and the mapping, target by target.
       EXPECT_EIGEN_NEAR(c->corrections_sensor_m.col(i),
-                        interpolate_correction(c->stencils[static_cast<std::size_t>(i)], model.corrections_sensor_m), 1e-18);
-      EXPECT_EIGEN_NEAR(c->corrected_sensor_m.col(i), targets_sensor.col(i) + c->corrections_sensor_m.col(i), 1e-15);
-      EXPECT_EIGEN_NEAR(c->corrected_robot_m.col(i), T.apply(Eigen::Vector3d(c->corrected_sensor_m.col(i))), 1e-15);
-      EXPECT_EIGEN_NEAR(c->uncorrected_robot_m.col(i), T.apply(Eigen::Vector3d(targets_sensor.col(i))), 1e-15);
+                        interpolate_correction(c->stencils[static_cast<std::size_t>(i)],
+                                               model.corrections_sensor_m),
+                        1e-18);
+      EXPECT_EIGEN_NEAR(c->corrected_sensor_m.col(i),
+                        targets_sensor.col(i) + c->corrections_sensor_m.col(i), 1e-15);
+      EXPECT_EIGEN_NEAR(c->corrected_robot_m.col(i),
+                        T.apply(Eigen::Vector3d(c->corrected_sensor_m.col(i))), 1e-15);
+      EXPECT_EIGEN_NEAR(c->uncorrected_robot_m.col(i),
+                        T.apply(Eigen::Vector3d(targets_sensor.col(i))), 1e-15);
     }
   }
 }
@@ -124,19 +134,23 @@ TEST_F(CorrectTargets, ExactAtFiducials) {
     }
   }
   Points3 measured(3, static_cast<Eigen::Index>(model.fiducials.size()));
-  for (std::size_t j = 0; j < model.fiducials.size(); ++j) measured.col(static_cast<Eigen::Index>(j)) = model.fiducials[j].sensor_m;
-  EXPECT_EIGEN_NEAR(T.apply_all(measured + model.corrections_sensor_m), a1.fiducials_robot_m, 1e-12);
+  for (std::size_t j = 0; j < model.fiducials.size(); ++j)
+    measured.col(static_cast<Eigen::Index>(j)) = model.fiducials[j].sensor_m;
+  EXPECT_EIGEN_NEAR(T.apply_all(measured + model.corrections_sensor_m), a1.fiducials_robot_m,
+                    1e-12);
 }
 
 TEST_F(CorrectTargets, CorrectedErrorFallsWithGridSpacing) {
   Random points_rng(59);
-  const Points3 targets_robot = random_points(points_rng, 500, 0.095, Eigen::Vector3d(0.1, 0.1, 0.1));
+  const Points3 targets_robot =
+      random_points(points_rng, 500, 0.095, Eigen::Vector3d(0.1, 0.1, 0.1));
   const Points3 sensor = measure(targets_robot, T);
   double previous = std::numeric_limits<double>::infinity();
   for (const int n : {3, 5, 9, 17}) {
     const double h = 0.2 / (n - 1);
     const RegistrationModel m = make_model(grid_points(n, n, n, Eigen::Vector3d::Constant(h)), T);
-    const TargetCorrection c = correct_targets(m, sensor, Points3(3, 0), with(InterpolationMethod::kGrid));
+    const TargetCorrection c =
+        correct_targets(m, sensor, Points3(3, 0), with(InterpolationMethod::kGrid));
     ASSERT_EQ(c.n_flagged, 0);
     const double cor = rms_m(c.corrected_robot_m, targets_robot);
     EXPECT_LT(cor, 0.6 * previous) << "spacing " << h;
@@ -160,7 +174,8 @@ TEST_F(CorrectTargets, FlagsTargetsOutsideAndKeepsTheirUncorrectedMapping) {
   }
   Points3 nominal = a1.targets_robot_m;
   nominal.col(5) += Eigen::Vector3d(0.003, 0, 0);  // no cube corners there
-  const TargetCorrection c = correct_targets(model, targets_sensor, nominal, with(InterpolationMethod::kOctuplet, 0.05));
+  const TargetCorrection c =
+      correct_targets(model, targets_sensor, nominal, with(InterpolationMethod::kOctuplet, 0.05));
   EXPECT_EQ(c.n_flagged, 1);
   EXPECT_EQ(c.stencils[5].status, StencilStatus::kMissingCorner);
 }
@@ -169,7 +184,8 @@ TEST_F(CorrectTargets, AutoFallsBackToScatteredAndGridRequestThrows) {
   Random points_rng(61);
   const RegistrationModel random_model = make_model(random_points(points_rng, 200, 0.1), T);
   const Points3 sensor = measure(random_points(points_rng, 20, 0.02), T);
-  const TargetCorrection c = correct_targets(random_model, sensor, Points3(3, 0), with(InterpolationMethod::kAuto));
+  const TargetCorrection c =
+      correct_targets(random_model, sensor, Points3(3, 0), with(InterpolationMethod::kAuto));
   EXPECT_EQ(c.method_used, InterpolationMethod::kScattered);
   EXPECT_NE(c.layout.find("scattered"), std::string::npos);
   try {
@@ -182,19 +198,30 @@ TEST_F(CorrectTargets, AutoFallsBackToScatteredAndGridRequestThrows) {
 
 TEST_F(CorrectTargets, RejectsUnusableInput) {
   const Points3 none(3, 0);
-  EXPECT_THROW((void)correct_targets(model, targets_sensor, none, with(InterpolationMethod::kOctuplet, 0.05)), InputError);
-  EXPECT_THROW((void)correct_targets(model, targets_sensor, a1.targets_robot_m, with(InterpolationMethod::kOctuplet)), InputError);
-  EXPECT_THROW((void)correct_targets(model, targets_sensor, a1.targets_robot_m.leftCols(3), with(InterpolationMethod::kGrid)), InputError);
+  EXPECT_THROW((void)correct_targets(model, targets_sensor, none,
+                                     with(InterpolationMethod::kOctuplet, 0.05)),
+               InputError);
+  EXPECT_THROW((void)correct_targets(model, targets_sensor, a1.targets_robot_m,
+                                     with(InterpolationMethod::kOctuplet)),
+               InputError);
+  EXPECT_THROW((void)correct_targets(model, targets_sensor, a1.targets_robot_m.leftCols(3),
+                                     with(InterpolationMethod::kGrid)),
+               InputError);
   Points3 nan = targets_sensor;
   nan(0, 7) = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW((void)correct_targets(model, nan, none, with(InterpolationMethod::kGrid)), InputError);
+  EXPECT_THROW((void)correct_targets(model, nan, none, with(InterpolationMethod::kGrid)),
+               InputError);
   RegistrationModel short_model = model;
   short_model.corrections_sensor_m = model.corrections_sensor_m.leftCols(10);
-  EXPECT_THROW((void)correct_targets(short_model, targets_sensor, none, with(InterpolationMethod::kAuto)), InputError);
+  EXPECT_THROW(
+      (void)correct_targets(short_model, targets_sensor, none, with(InterpolationMethod::kAuto)),
+      InputError);
   RegistrationModel flat = make_model(grid_points(5, 5, 1, Eigen::Vector3d::Constant(0.02)), T);
-  EXPECT_THROW((void)correct_targets(flat, targets_sensor, none, with(InterpolationMethod::kAuto)), InputError);
+  EXPECT_THROW((void)correct_targets(flat, targets_sensor, none, with(InterpolationMethod::kAuto)),
+               InputError);
   RegistrationModel empty;
-  EXPECT_THROW((void)correct_targets(empty, targets_sensor, none, with(InterpolationMethod::kAuto)), InputError);
+  EXPECT_THROW((void)correct_targets(empty, targets_sensor, none, with(InterpolationMethod::kAuto)),
+               InputError);
 }
 
 TEST_F(CorrectTargets, ScaleIsApplied) {
@@ -202,22 +229,26 @@ TEST_F(CorrectTargets, ScaleIsApplied) {
   scaled.scale = 1.002;
   const RegistrationModel m = make_model(a1.fiducials_robot_m, scaled);
   const Points3 sensor = measure(a1.targets_robot_m, scaled);
-  const TargetCorrection c = correct_targets(m, sensor, Points3(3, 0), with(InterpolationMethod::kGrid));
+  const TargetCorrection c =
+      correct_targets(m, sensor, Points3(3, 0), with(InterpolationMethod::kGrid));
   for (Eigen::Index i = 0; i < sensor.cols(); ++i) {
-    EXPECT_EIGEN_NEAR(c.uncorrected_robot_m.col(i), scaled.apply(Eigen::Vector3d(sensor.col(i))), 1e-15);
+    EXPECT_EIGEN_NEAR(c.uncorrected_robot_m.col(i), scaled.apply(Eigen::Vector3d(sensor.col(i))),
+                      1e-15);
   }
-  EXPECT_LT(rms_m(c.corrected_robot_m, a1.targets_robot_m), 0.5 * rms_m(c.uncorrected_robot_m, a1.targets_robot_m));
+  EXPECT_LT(rms_m(c.corrected_robot_m, a1.targets_robot_m),
+            0.5 * rms_m(c.uncorrected_robot_m, a1.targets_robot_m));
 }
 
 TEST_F(CorrectTargets, ParallelRunMatchesOneTargetAtATime) {
   Random points_rng(67);
   const int n = testing::sanitized() ? 9000 : 30000;
-  const Points3 sensor = T.inverse().apply_all(
-      random_points(points_rng, n, 0.12, Eigen::Vector3d(0.425, 0.05, 0.15)));
+  const Points3 sensor =
+      T.inverse().apply_all(random_points(points_rng, n, 0.12, Eigen::Vector3d(0.425, 0.05, 0.15)));
   for (const auto method : {InterpolationMethod::kGrid, InterpolationMethod::kScattered}) {
     const TargetCorrection all = correct_targets(model, sensor, Points3(3, 0), with(method));
     for (Eigen::Index i = 0; i < n; i += n / 7) {
-      const TargetCorrection one = correct_targets(model, sensor.col(i), Points3(3, 0), with(method));
+      const TargetCorrection one =
+          correct_targets(model, sensor.col(i), Points3(3, 0), with(method));
       EXPECT_EIGEN_NEAR(one.corrected_robot_m.col(0), all.corrected_robot_m.col(i), 0.0);
       EXPECT_EQ(one.stencils[0].status, all.stencils[static_cast<std::size_t>(i)].status);
     }

@@ -1,10 +1,9 @@
 #pragma once
 // Layouts for the correction tests: regular grids, the paper's A1 pattern, affine fields.
+#include <Eigen/Core>
 #include <algorithm>
 #include <numeric>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/random.hpp"
 #include "vrreg/core/types.hpp"
@@ -45,8 +44,10 @@ inline A1Layout a1_layout(const Eigen::Vector3d& origin_m = Eigen::Vector3d(0.3,
   }
   A1Layout out{Points3(3, static_cast<Eigen::Index>(fiducials.size())),
                Points3(3, static_cast<Eigen::Index>(targets.size()))};
-  for (std::size_t j = 0; j < fiducials.size(); ++j) out.fiducials_robot_m.col(static_cast<Eigen::Index>(j)) = fiducials[j];
-  for (std::size_t j = 0; j < targets.size(); ++j) out.targets_robot_m.col(static_cast<Eigen::Index>(j)) = targets[j];
+  for (std::size_t j = 0; j < fiducials.size(); ++j)
+    out.fiducials_robot_m.col(static_cast<Eigen::Index>(j)) = fiducials[j];
+  for (std::size_t j = 0; j < targets.size(); ++j)
+    out.targets_robot_m.col(static_cast<Eigen::Index>(j)) = targets[j];
   return out;
 }
 
@@ -63,7 +64,8 @@ inline std::vector<Eigen::Index> random_permutation(Random& rng, Eigen::Index n)
 /// Columns of `points` in the given order.
 inline Points3 permuted(const Points3& points, const std::vector<Eigen::Index>& order) {
   Points3 out(3, points.cols());
-  for (Eigen::Index j = 0; j < points.cols(); ++j) out.col(j) = points.col(order[static_cast<std::size_t>(j)]);
+  for (Eigen::Index j = 0; j < points.cols(); ++j)
+    out.col(j) = points.col(order[static_cast<std::size_t>(j)]);
   return out;
 }
 

@@ -31,7 +31,8 @@ TEST(DetectGrid, FullGridWithDifferentSpacingPerAxis) {
   EXPECT_EQ(grid.stride, 1);
   EXPECT_EIGEN_NEAR(grid.spacing_m, spacing, 1e-12);
   EXPECT_EIGEN_NEAR(grid.origin_m, origin, 1e-12);
-  for (Eigen::Index j = 0; j < fiducials.cols(); ++j) EXPECT_EQ(grid.fiducial[static_cast<std::size_t>(j)], j);
+  for (Eigen::Index j = 0; j < fiducials.cols(); ++j)
+    EXPECT_EQ(grid.fiducial[static_cast<std::size_t>(j)], j);
   EXPECT_EQ(grid.describe(), "grid 5 x 4 x 3 nodes, 20 x 25 x 12.5 mm");
 }
 
@@ -60,7 +61,8 @@ TEST(DetectGrid, A1PatternGivesTheEverySecondSubLattice) {
 
 TEST(DetectGrid, JitteredNodesWithinTolerance) {
   Random rng(7);
-  Points3 fiducials = grid_points(6, 5, 4, Eigen::Vector3d(0.025, 0.03, 0.02), Eigen::Vector3d(0.2, 0.1, 0.3));
+  Points3 fiducials =
+      grid_points(6, 5, 4, Eigen::Vector3d(0.025, 0.03, 0.02), Eigen::Vector3d(0.2, 0.1, 0.3));
   for (Eigen::Index j = 0; j < fiducials.cols(); ++j) {
     for (int a = 0; a < 3; ++a) fiducials(a, j) += rng.uniform(-0.4, 0.4) * kTolerance;
   }
@@ -89,7 +91,8 @@ TEST(DetectGrid, RejectsIrregularLayouts) {
   EXPECT_FALSE(detect_grid(grid_points(4, 4, 1, Eigen::Vector3d::Constant(0.02)), kTolerance).grid);
 
   Points3 twice(3, 16);
-  twice << grid_points(2, 2, 2, Eigen::Vector3d::Constant(0.02)), grid_points(2, 2, 2, Eigen::Vector3d::Constant(0.02));
+  twice << grid_points(2, 2, 2, Eigen::Vector3d::Constant(0.02)),
+      grid_points(2, 2, 2, Eigen::Vector3d::Constant(0.02));
   const GridDetection dup = detect_grid(twice, kTolerance);
   EXPECT_FALSE(dup.grid);
   EXPECT_NE(dup.reason.find("share grid node"), std::string::npos) << dup.reason;
@@ -114,7 +117,8 @@ TEST(GridStencil, WeightsSumToOneAndLieInUnitInterval) {
 
 TEST(GridStencil, ExactAtNodesAndReproducesAffineFields) {
   Random rng(5);
-  const Points3 fiducials = grid_points(5, 6, 4, Eigen::Vector3d(0.025, 0.02, 0.03), Eigen::Vector3d(0.3, 0.1, -0.2));
+  const Points3 fiducials =
+      grid_points(5, 6, 4, Eigen::Vector3d(0.025, 0.02, 0.03), Eigen::Vector3d(0.3, 0.1, -0.2));
   const GridLayout grid = detect_or_fail(fiducials);
   const auto field = random_affine_field(rng);
   const Points3 corrections = field.at(fiducials);
@@ -123,8 +127,9 @@ TEST(GridStencil, ExactAtNodesAndReproducesAffineFields) {
     EXPECT_EIGEN_NEAR(interpolate_correction(s, corrections), corrections.col(j), 1e-15);
   }
   for (int trial = 0; trial < 2000; ++trial) {
-    const Eigen::Vector3d p = Eigen::Vector3d(0.3, 0.1, -0.2) +
-                              Eigen::Vector3d(rng.uniform(0, 0.1), rng.uniform(0, 0.1), rng.uniform(0, 0.09));
+    const Eigen::Vector3d p =
+        Eigen::Vector3d(0.3, 0.1, -0.2) +
+        Eigen::Vector3d(rng.uniform(0, 0.1), rng.uniform(0, 0.1), rng.uniform(0, 0.09));
     const Stencil s = grid_stencil(grid, p, kTolerance);
     ASSERT_EQ(s.status, StencilStatus::kOk);
     EXPECT_EIGEN_NEAR(interpolate_correction(s, corrections), field(p), 1e-15);
@@ -138,7 +143,8 @@ TEST(GridStencil, FlagsPointsOutsideTheGrid) {
   EXPECT_EQ(grid_stencil(grid, Eigen::Vector3d(-1e-3, 0.05, 0.05), kTolerance).status,
             StencilStatus::kOutsideGrid);
   // Within the tolerance of the boundary: clamped onto it.
-  const Stencil s = grid_stencil(grid, Eigen::Vector3d(0.05, 0.05, 0.1 + 0.5 * kTolerance), kTolerance);
+  const Stencil s =
+      grid_stencil(grid, Eigen::Vector3d(0.05, 0.05, 0.1 + 0.5 * kTolerance), kTolerance);
   EXPECT_EQ(s.status, StencilStatus::kOk);
   EXPECT_NEAR(s.weight[4] + s.weight[5] + s.weight[6] + s.weight[7], 1.0, 1e-15);
 }
@@ -155,8 +161,9 @@ TEST(GridStencil, InvariantToFiducialOrder) {
   corrections += 1e-4 * corrections.array().sin().matrix();  // not affine
   const Points3 corrections_shuffled = permuted(corrections, order);
   for (int trial = 0; trial < 500; ++trial) {
-    const Eigen::Vector3d p = Eigen::Vector3d(0.3, -0.1, 0.05) +
-                              Eigen::Vector3d(rng.uniform(0, 0.25), rng.uniform(0, 0.3), rng.uniform(0, 0.2));
+    const Eigen::Vector3d p =
+        Eigen::Vector3d(0.3, -0.1, 0.05) +
+        Eigen::Vector3d(rng.uniform(0, 0.25), rng.uniform(0, 0.3), rng.uniform(0, 0.2));
     const Stencil a = grid_stencil(grid, p, kTolerance);
     const Stencil b = grid_stencil(grid_shuffled, p, kTolerance);
     ASSERT_EQ(a.status, StencilStatus::kOk);

@@ -17,13 +17,15 @@ struct BLayout {
   Points3 fiducials_m;
 };
 BLayout b_layout() {
-  BLayout out{testing::grid_points(2, 2, 2, Eigen::Vector3d::Constant(0.05), Eigen::Vector3d(0.4, 0.0, 0.2)),
+  BLayout out{testing::grid_points(2, 2, 2, Eigen::Vector3d::Constant(0.05),
+                                   Eigen::Vector3d(0.4, 0.0, 0.2)),
               Points3(3, 8 * 3 * 8)};
   Eigen::Index c = 0;
   for (Eigen::Index t = 0; t < 8; ++t) {
     for (const double a : {0.010, 0.030, 0.050}) {
       for (int corner = 0; corner < 8; ++corner) {
-        const Eigen::Vector3d sign((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1, (corner & 4) ? 1 : -1);
+        const Eigen::Vector3d sign((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1,
+                                   (corner & 4) ? 1 : -1);
         out.fiducials_m.col(c++) = out.targets_m.col(t) + 0.5 * a * sign;
       }
     }
@@ -32,11 +34,13 @@ BLayout b_layout() {
   std::vector<Eigen::Index> keep;
   for (Eigen::Index j = 0; j < out.fiducials_m.cols(); ++j) {
     bool seen = false;
-    for (const Eigen::Index k : keep) seen = seen || (out.fiducials_m.col(k) - out.fiducials_m.col(j)).norm() < 1e-9;
+    for (const Eigen::Index k : keep)
+      seen = seen || (out.fiducials_m.col(k) - out.fiducials_m.col(j)).norm() < 1e-9;
     if (!seen) keep.push_back(j);
   }
   Points3 unique(3, static_cast<Eigen::Index>(keep.size()));
-  for (std::size_t j = 0; j < keep.size(); ++j) unique.col(static_cast<Eigen::Index>(j)) = out.fiducials_m.col(keep[j]);
+  for (std::size_t j = 0; j < keep.size(); ++j)
+    unique.col(static_cast<Eigen::Index>(j)) = out.fiducials_m.col(keep[j]);
   out.fiducials_m = unique;
   return out;
 }
@@ -67,7 +71,8 @@ TEST(OctupletStencils, MatchesCornersWithinToleranceAndFlagsMissingOnes) {
   const BLayout b = b_layout();
   Points3 jittered = b.fiducials_m;
   Random rng(41);
-  for (Eigen::Index j = 0; j < jittered.cols(); ++j) jittered.col(j) += rng.uniform(-0.5, 0.5) * kTolerance * Eigen::Vector3d::Ones();
+  for (Eigen::Index j = 0; j < jittered.cols(); ++j)
+    jittered.col(j) += rng.uniform(-0.5, 0.5) * kTolerance * Eigen::Vector3d::Ones();
   const OctupletStencils ok(jittered, 0.03, kTolerance);
   EXPECT_EQ(ok.stencil(b.targets_m.col(3)).status, StencilStatus::kOk);
 

@@ -1,10 +1,10 @@
 #include "vrreg/correction/rrbc.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 #include "vrreg/core/check.hpp"
 #include "vrreg_test.hpp"

@@ -1,9 +1,9 @@
 #include "vrreg/correction/scattered.hpp"
 
-#include <set>
+#include <gtest/gtest.h>
 
 #include <Eigen/LU>
-#include <gtest/gtest.h>
+#include <set>
 
 #include "correction_fixtures.hpp"
 #include "vrreg/core/check.hpp"
@@ -28,7 +28,8 @@ Eigen::Vector3d random_inside(Random& rng, const Points3& fiducials) {
   w /= w.sum();
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (int k = 0; k < 4; ++k) {
-    p += w(k) * fiducials.col(static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(fiducials.cols()))));
+    p += w(k) * fiducials.col(static_cast<Eigen::Index>(
+                    rng.below(static_cast<std::uint64_t>(fiducials.cols()))));
   }
   return p;
 }
@@ -101,12 +102,15 @@ TEST(ScatteredStencils, ExactAtFiducials) {
 TEST(ScatteredStencils, FlagsPointsOutsideTheHull) {
   const Points3 box = grid_points(3, 3, 3, Eigen::Vector3d::Constant(0.05));
   const ScatteredStencils stencils(box, kTolerance);
-  EXPECT_EQ(stencils.stencil(Eigen::Vector3d(0.05, 0.05, 0.1 + 1e-4)).status, StencilStatus::kOutsideHull);
+  EXPECT_EQ(stencils.stencil(Eigen::Vector3d(0.05, 0.05, 0.1 + 1e-4)).status,
+            StencilStatus::kOutsideHull);
   EXPECT_EQ(stencils.stencil(Eigen::Vector3d(-1.0, 2.0, 0.05)).status, StencilStatus::kOutsideHull);
-  EXPECT_EQ(stencils.stencil(Eigen::Vector3d(0.11, 0.11, 0.11)).status, StencilStatus::kOutsideHull);
+  EXPECT_EQ(stencils.stencil(Eigen::Vector3d(0.11, 0.11, 0.11)).status,
+            StencilStatus::kOutsideHull);
   // On the hull, or within the tolerance outside it: inside.
   EXPECT_EQ(stencils.stencil(Eigen::Vector3d(0.031, 0.017, 0.1)).status, StencilStatus::kOk);
-  EXPECT_EQ(stencils.stencil(Eigen::Vector3d(0.031, 0.017, 0.1 + 0.5 * kTolerance)).status, StencilStatus::kOk);
+  EXPECT_EQ(stencils.stencil(Eigen::Vector3d(0.031, 0.017, 0.1 + 0.5 * kTolerance)).status,
+            StencilStatus::kOk);
   // A corner cut off: the hull of a tetrahedron-shaped layout excludes the box corner.
   Random rng(23);
   const Points3 ball = random_points(rng, 300, 0.1);
@@ -129,8 +133,9 @@ TEST(ScatteredStencils, GridLayoutsWithFlatTetrahedra) {
   int fallbacks = 0;
   const int trials = testing::sanitized() ? 2000 : 20000;
   for (int trial = 0; trial < trials; ++trial) {
-    const Eigen::Vector3d p = Eigen::Vector3d(0.3, -0.1, 0.05) +
-                              Eigen::Vector3d(rng.uniform(0, 0.25), rng.uniform(0, 0.3), rng.uniform(0, 0.2));
+    const Eigen::Vector3d p =
+        Eigen::Vector3d(0.3, -0.1, 0.05) +
+        Eigen::Vector3d(rng.uniform(0, 0.25), rng.uniform(0, 0.3), rng.uniform(0, 0.2));
     LocateStats stats;
     const Stencil s = stencils.stencil(p, &stats);
     ASSERT_EQ(s.status, StencilStatus::kOk);
@@ -151,7 +156,8 @@ TEST(ScatteredStencils, ConcentricCubesAndHullBoundary) {
   for (Eigen::Index t = 0; t < targets.cols(); ++t) {
     for (int e = 1; e <= 10; ++e) {
       for (int corner = 0; corner < 8; ++corner) {
-        const Eigen::Vector3d sign((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1, (corner & 4) ? 1 : -1);
+        const Eigen::Vector3d sign((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1,
+                                   (corner & 4) ? 1 : -1);
         const Eigen::Vector3d p = targets.col(t) + 0.0025 * e * sign;
         bool seen = false;
         for (const auto& q : points) seen = seen || (q - p).norm() < 1e-9;
@@ -160,7 +166,8 @@ TEST(ScatteredStencils, ConcentricCubesAndHullBoundary) {
     }
   }
   Points3 fiducials(3, static_cast<Eigen::Index>(points.size()));
-  for (std::size_t j = 0; j < points.size(); ++j) fiducials.col(static_cast<Eigen::Index>(j)) = points[j];
+  for (std::size_t j = 0; j < points.size(); ++j)
+    fiducials.col(static_cast<Eigen::Index>(j)) = points[j];
   const ScatteredStencils stencils(fiducials, kTolerance);
   EXPECT_GT(stencils.n_flat(), 0);
   Random rng(43);
@@ -212,7 +219,8 @@ TEST(ScatteredStencils, InvariantToFiducialOrder) {
 TEST(ScatteredStencils, RejectsUnusableLayouts) {
   Random rng(37);
   EXPECT_THROW(ScatteredStencils(random_points(rng, 3, 0.1), kTolerance), InputError);
-  EXPECT_THROW(ScatteredStencils(grid_points(5, 5, 1, Eigen::Vector3d::Constant(0.02)), kTolerance), InputError);
+  EXPECT_THROW(ScatteredStencils(grid_points(5, 5, 1, Eigen::Vector3d::Constant(0.02)), kTolerance),
+               InputError);
   Points3 line(3, 10);
   for (int j = 0; j < 10; ++j) line.col(j) = Eigen::Vector3d(1, 2, 3) * 0.01 * j;
   EXPECT_THROW(ScatteredStencils(line, kTolerance), InputError);
@@ -223,7 +231,8 @@ TEST(ScatteredStencils, RejectsUnusableLayouts) {
     ScatteredStencils s(twice, kTolerance);
     ADD_FAILURE() << "duplicates accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("share a nominal robot position"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("share a nominal robot position"), std::string::npos)
+        << e.what();
   }
   Points3 nan = random_points(rng, 10, 0.1);
   nan(2, 3) = std::numeric_limits<double>::quiet_NaN();

@@ -1,8 +1,8 @@
 #include "vrreg/io/robot_file.hpp"
 
-#include <numbers>
-
 #include <gtest/gtest.h>
+
+#include <numbers>
 
 #include "io_test_helpers.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
@@ -70,7 +70,8 @@ TEST(RobotFile, ReadsJsonAndMatchesTheBuiltin) {
                 .cwiseAbs()
                 .maxCoeff(),
             1e-15);
-  for (int i = 0; i < 7; ++i) EXPECT_NEAR(chain.limit(i).upper_rad, builtin.limit(i).upper_rad, 1e-15);
+  for (int i = 0; i < 7; ++i)
+    EXPECT_NEAR(chain.limit(i).upper_rad, builtin.limit(i).upper_rad, 1e-15);
 }
 
 TEST(RobotFile, LoadRobotTakesNamesThenFiles) {
@@ -125,12 +126,11 @@ TEST(RobotFile, ErrorsNameFileLineAndKey) {
   check("typo.yaml", "dh:\n  - {a_m: 0, alpha_deg: 90, d_m: 0.1}\ntools: {}\n", 3,
         "tools: unknown key");
   check("dup.yaml", "name: a\nname: b\ndh: []\n", 2, "duplicate key");
-  const std::string too_many =
-      "dh:\n" + [] {
-        std::string s;
-        for (int i = 0; i < 13; ++i) s += "  - {a_m: 0, alpha_deg: 90, d_m: 0.1}\n";
-        return s;
-      }();
+  const std::string too_many = "dh:\n" + [] {
+    std::string s;
+    for (int i = 0; i < 13; ++i) s += "  - {a_m: 0, alpha_deg: 90, d_m: 0.1}\n";
+    return s;
+  }();
   check("many.yaml", too_many, 2, "expected a list of 1 to 12 rows");
   const std::string missing = dir.file("absent.yaml");
   EXPECT_TRUE(throws_file_error([&] { read_robot_file(missing); }, missing, 0, "cannot open"));

@@ -1,8 +1,8 @@
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <set>
-
-#include <gtest/gtest.h>
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/configuration_label.hpp"

@@ -1,13 +1,13 @@
 #include "vrreg/kinematics/forward_kinematics.hpp"
 
-#include <cmath>
-#include <numbers>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <kdl/chain.hpp>
 #include <kdl/chainfksolverpos_recursive.hpp>
 #include <kdl/chainjnttojacsolver.hpp>
 #include <kdl/frames.hpp>
+#include <numbers>
 
 #include "kinematics_test_support.hpp"
 #include "vrreg/core/check.hpp"
@@ -32,7 +32,8 @@ KDL::Chain to_kdl(const SerialChain& chain) {
 Eigen::Isometry3d from_kdl(const KDL::Frame& f) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) t.linear()(i, j) = f.M(static_cast<unsigned>(i), static_cast<unsigned>(j));
+    for (int j = 0; j < 3; ++j)
+      t.linear()(i, j) = f.M(static_cast<unsigned>(i), static_cast<unsigned>(j));
     t.translation()(i) = f.p(static_cast<unsigned>(i));
   }
   return t;

@@ -1,9 +1,9 @@
 #include "vrreg/kinematics/lwr_ik.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 #include "kinematics_test_support.hpp"
 #include "vrreg/core/check.hpp"
@@ -82,8 +82,7 @@ TEST(LwrIk, JointLimitsKeepOnlyFeasibleConfigurationsAndContainTheSample) {
     ASSERT_TRUE(r.ok());
     IkOptions unlimited;
     unlimited.apply_joint_limits = false;
-    const IkResult all =
-        lwr_inverse_kinematics(chain, state.T_base_tcp, state.psi_rad, unlimited);
+    const IkResult all = lwr_inverse_kinematics(chain, state.T_base_tcp, state.psi_rad, unlimited);
     EXPECT_EQ(r.solutions.size() + static_cast<std::size_t>(r.n_outside_limits),
               all.solutions.size());
     bool contains = false;
@@ -124,7 +123,8 @@ TEST(LwrIk, FlipRulesOfTheDesign) {
   const SerialChain chain = lwr4();
   IkOptions all;
   all.apply_joint_limits = false;
-  const IkResult r = lwr_inverse_kinematics(chain, pose_from({0.3, -0.3, 0.6}, 0.2, 2.0, 1.0), 0.4, all);
+  const IkResult r =
+      lwr_inverse_kinematics(chain, pose_from({0.3, -0.3, 0.6}, 0.2, 2.0, 1.0), 0.4, all);
   ASSERT_EQ(r.solutions.size(), 8u);
   const JointVector& base = r.solutions[0].q_rad;
   const JointVector& flip2 = r.solutions[4].q_rad;  // GC=-,+,+
@@ -158,6 +158,9 @@ TEST(LwrIk, SingularCasesAreFlagged) {
   ASSERT_TRUE(r.ok());
   EXPECT_NE(r.singular & kShoulderSingular, 0);
   for (const IkSolution& s : r.solutions) {
+    EXPECT_EQ(s.config.lwr_sign(2), 1);  // the theta2 pair collapses
+    EXPECT_NEAR(wrap_angle(s.q_rad(2) - 0.2 - (s.config.lwr_sign(4) < 0 ? kPi : 0.0)), 0.0,
+                1e-12);  // joint 3 takes the stated free value (+ pi for the theta4 flip)
     const auto e = pose_error(forward_kinematics(chain, s.q_rad), state.T_base_tcp);
     EXPECT_LE(e.position_m, 1e-9);
     EXPECT_LE(e.rotation_rad, 1e-9);
@@ -180,6 +183,37 @@ TEST(LwrIk, SingularCasesAreFlagged) {
   for (const IkSolution& s : r.solutions) {
     EXPECT_LE(pose_error(forward_kinematics(chain, s.q_rad), t).position_m, 1e-9);
   }
+}
+
+TEST(LwrIk, CalibratedOffsetsToolAndBaseKeepTheIkExact) {
+  std::vector<DhRow> rows = lwr4().rows();
+  for (std::size_t i = 0; i < 7; ++i) rows[i].theta_offset_rad = 0.003 * static_cast<double>(i + 1);
+  rows[0].d_m = 0.3105;
+  rows[4].d_m = 0.3898;
+  const SerialChain chain = SerialChain("lwr-cal", rows, lwr4().limits())
+                                .with_tool(pose_from({0.01, -0.02, 0.06}, 0.1, 0.0, 0.2))
+                                .with_base(pose_from({0.5, 0.2, 0.8}, kPi, 0.0, 0.3));
+  ASSERT_EQ(chain.family(), ChainFamily::kLwr);
+  Random rng(21);
+  long tested = 0, found = 0;
+  for (int k = 0; k < 5000; ++k) {
+    const JointVector q = random_joints(rng, chain);
+    const LwrArmState state = lwr_arm_state(chain, q);
+    EXPECT_LE(pose_error(state.T_base_tcp, forward_kinematics(chain, q)).position_m, 1e-15);
+    const IkResult r = lwr_inverse_kinematics(chain, state.T_base_tcp, state.psi_rad);
+    bool contains = false;
+    for (const IkSolution& s : r.solutions) {
+      const auto e = pose_error(forward_kinematics(chain, s.q_rad), state.T_base_tcp);
+      EXPECT_LE(e.position_m, 1e-9);
+      EXPECT_LE(e.rotation_rad, 1e-9);
+      contains = contains || joint_distance_linf(s.q_rad, q) < 1e-7;
+    }
+    if (generic(q)) {
+      ++tested;
+      found += contains ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(found, tested);
 }
 
 TEST(LwrIk, UnreachableAndBadInput) {

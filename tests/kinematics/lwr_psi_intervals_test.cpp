@@ -1,9 +1,9 @@
 #include "vrreg/kinematics/lwr_psi_intervals.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 #include "kinematics_test_support.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
@@ -30,10 +30,21 @@ bool near_boundary(const std::vector<PsiInterval>& list, double psi, double marg
   return false;
 }
 
-TEST(LwrPsiIntervals, AgreeWithDenseSampling) {
-  const SerialChain chain = lwr4();
+SerialChain calibrated_lwr() {
+  std::vector<DhRow> rows = lwr4().rows();
+  for (std::size_t i = 0; i < 7; ++i) rows[i].theta_offset_rad = -0.02 * static_cast<double>(i);
+  std::vector<JointLimits> limits = lwr4().limits();
+  limits[2] = {-1.0, 2.5};  // asymmetric
+  return SerialChain("lwr-cal", rows, limits)
+      .with_tool(testing::pose_from({0.0, 0.03, 0.05}, 0.0, 0.3, 0.0));
+}
+
+class LwrPsiIntervals : public ::testing::TestWithParam<bool> {};
+
+TEST_P(LwrPsiIntervals, AgreeWithDenseSampling) {
+  const SerialChain chain = GetParam() ? calibrated_lwr() : lwr4();
   Random rng(17);
-  const int poses = ::vrreg::testing::sanitized() ? 30 : 300;
+  const int poses = ::vrreg::testing::sanitized() ? 30 : 200;
   const int samples = 3600;  // 0.1 deg
   long mismatches = 0, checked = 0;
   for (int k = 0; k < poses; ++k) {
@@ -56,7 +67,9 @@ TEST(LwrPsiIntervals, AgreeWithDenseSampling) {
   EXPECT_EQ(mismatches, 0) << "of " << checked;
 }
 
-TEST(LwrPsiIntervals, TheOwnArmAngleOfASampleIsInItsConfigurationsInterval) {
+INSTANTIATE_TEST_SUITE_P(NominalAndCalibrated, LwrPsiIntervals, ::testing::Bool());
+
+TEST(LwrPsiIntervalsOwn, TheOwnArmAngleOfASampleIsInItsConfigurationsInterval) {
   const SerialChain chain = lwr4();
   Random rng(3);
   for (int k = 0; k < 2000; ++k) {
@@ -64,8 +77,8 @@ TEST(LwrPsiIntervals, TheOwnArmAngleOfASampleIsInItsConfigurationsInterval) {
     const LwrArmState state = lwr_arm_state(chain, q);
     const PsiIntervalsResult r = lwr_feasible_psi(chain, state.T_base_tcp);
     ASSERT_TRUE(r.ok());
-    EXPECT_TRUE(inside(r.intervals[static_cast<std::size_t>(state.config.index())], state.psi_rad,
-                       -1e-9))
+    EXPECT_TRUE(
+        inside(r.intervals[static_cast<std::size_t>(state.config.index())], state.psi_rad, -1e-9))
         << "psi " << state.psi_rad << " config " << state.config.to_string();
     for (const auto& list : r.intervals) {
       for (std::size_t i = 0; i < list.size(); ++i) {
@@ -78,7 +91,7 @@ TEST(LwrPsiIntervals, TheOwnArmAngleOfASampleIsInItsConfigurationsInterval) {
   }
 }
 
-TEST(LwrPsiIntervals, UnreachablePose) {
+TEST(LwrPsiIntervalsOwn, UnreachablePose) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.translation() << 2.0, 0.0, 0.0;
   const PsiIntervalsResult r = lwr_feasible_psi(lwr4(), t);

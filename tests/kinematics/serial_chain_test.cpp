@@ -1,10 +1,10 @@
 #include "vrreg/kinematics/serial_chain.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/pose.hpp"
@@ -74,8 +74,7 @@ TEST(SerialChain, RejectsBadInput) {
   Eigen::Isometry3d reflection = Eigen::Isometry3d::Identity();
   reflection.linear()(2, 2) = -1.0;
   EXPECT_THROW(ur5().with_base(reflection), InputError);
-  EXPECT_THROW(SerialChain("x", std::vector<DhRow>(13), std::vector<JointLimits>(13)),
-               InputError);
+  EXPECT_THROW(SerialChain("x", std::vector<DhRow>(13), std::vector<JointLimits>(13)), InputError);
 }
 
 TEST(SerialChain, WithinLimits) {

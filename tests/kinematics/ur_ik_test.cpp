@@ -1,10 +1,10 @@
 #include "vrreg/kinematics/ur_ik.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
 #include <set>
-
-#include <gtest/gtest.h>
 
 #include "kinematics_test_support.hpp"
 #include "vrreg/core/check.hpp"
@@ -262,8 +262,7 @@ TEST(UrIk, BadInputThrows) {
   EXPECT_THROW(ur_inverse_kinematics(lwr4(), pose_from({0.3, 0.2, 0.4}, 0, 0, 0)), InputError);
   IkOptions bad;
   bad.singular_tolerance = -1.0;
-  EXPECT_THROW(ur_inverse_kinematics(chain, pose_from({0.3, 0.2, 0.4}, 0, 0, 0), bad),
-               InputError);
+  EXPECT_THROW(ur_inverse_kinematics(chain, pose_from({0.3, 0.2, 0.4}, 0, 0, 0), bad), InputError);
 }
 
 }  // namespace

@@ -15,11 +15,11 @@ struct TargetCorrection {
   InterpolationMethod method_used = InterpolationMethod::kAuto;  ///< never kAuto after a call
   std::string layout;  ///< what was used, e.g. "grid 6 x 7 x 5 nodes, 50 mm (every 2nd fiducial)"
   std::vector<Stencil> stencils;
-  Points3 corrections_sensor_m;   ///< epsilon(T_X) per target (zero where status != kOk)
-  Points3 corrected_sensor_m;     ///< T_X + epsilon(T_X) (Eq. 8)
-  Points3 corrected_robot_m;      ///< R (T_X + epsilon) + tau; uncorrected mapping where flagged
-  Points3 uncorrected_robot_m;    ///< R T_X + tau
-  int n_flagged = 0;              ///< targets with status != kOk
+  Points3 corrections_sensor_m;  ///< epsilon(T_X) per target (zero where status != kOk)
+  Points3 corrected_sensor_m;    ///< T_X + epsilon(T_X) (Eq. 8)
+  Points3 corrected_robot_m;     ///< R (T_X + epsilon) + tau; uncorrected mapping where flagged
+  Points3 uncorrected_robot_m;   ///< R T_X + tau
+  int n_flagged = 0;             ///< targets with status != kOk
 };
 
 /// Corrects targets measured in the sensor frame with the model's fiducial corrections.

@@ -1,9 +1,8 @@
 #pragma once
 // Delaunay tetrahedralization (qhull, reentrant libqhull_r) for scattered RRBC interpolation.
+#include <Eigen/Core>
 #include <array>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/types.hpp"
 

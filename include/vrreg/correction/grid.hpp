@@ -1,12 +1,11 @@
 #pragma once
 // Trilinear RRBC interpolation on a complete regular grid of fiducials (paper Discussion: weights
 // of Eq. 7 from a trilinear scheme; 1/8 each at a cell centre).
+#include <Eigen/Core>
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/rrbc.hpp"
@@ -19,9 +18,9 @@ struct GridLayout {
   Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();   ///< node (0, 0, 0), robot frame [m]
   Eigen::Vector3d spacing_m = Eigen::Vector3d::Ones();  ///< node spacing per axis [m]
   std::array<int, 3> nodes{};                           ///< nodes per axis (>= 2 each)
-  int stride = 1;  ///< every stride-th fiducial of the base lattice (1: all of it)
-  Eigen::Index n_fiducials = 0;            ///< fiducials the grid was detected in
-  std::vector<Eigen::Index> fiducial;      ///< fiducial column per node, x fastest
+  int stride = 1;                ///< every stride-th fiducial of the base lattice (1: all of it)
+  Eigen::Index n_fiducials = 0;  ///< fiducials the grid was detected in
+  std::vector<Eigen::Index> fiducial;  ///< fiducial column per node, x fastest
 
   /// Fiducial column of node (i, j, k).
   [[nodiscard]] Eigen::Index node_fiducial(int i, int j, int k) const {

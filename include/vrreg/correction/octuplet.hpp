@@ -1,10 +1,9 @@
 #pragma once
 // Octuplet stencils (paper section 3.2, dataset B): the 8 fiducials at the corners of a cube of
 // edge a centred at a target's nominal robot-frame position, equal weights 1/8 (Eq. 7).
+#include <Eigen/Core>
 #include <memory>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/rrbc.hpp"

@@ -1,8 +1,7 @@
 #pragma once
 // RRBC (paper section 3.2): corrections to the fiducials (Eq. 6) and their interpolation (Eq. 7).
-#include <array>
-
 #include <Eigen/Core>
+#include <array>
 
 #include "vrreg/core/types.hpp"
 
@@ -27,7 +26,7 @@ enum class StencilStatus {
 struct Stencil {
   std::array<Eigen::Index, 8> fiducial{};  ///< column indices into the fiducial set
   std::array<double, 8> weight{};
-  int size = 0;                            ///< entries in use (8 grid/octuplet, 4 scattered)
+  int size = 0;  ///< entries in use (8 grid/octuplet, 4 scattered)
   StencilStatus status = StencilStatus::kOk;
 };
 

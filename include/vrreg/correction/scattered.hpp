@@ -1,11 +1,10 @@
 #pragma once
 // Scattered RRBC interpolation: barycentric weights (Eq. 7) in the Delaunay tetrahedron of the
 // fiducials' nominal robot positions that holds the registered target (linear precision).
+#include <Eigen/Core>
 #include <cstdint>
 #include <memory>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/rrbc.hpp"

@@ -1,8 +1,7 @@
 #pragma once
 // One row of a standard (distal) Denavit-Hartenberg table and the link transform it defines.
-#include <cmath>
-
 #include <Eigen/Geometry>
+#include <cmath>
 
 namespace vrreg::kinematics {
 

@@ -1,9 +1,8 @@
 #pragma once
 // Forward kinematics and the geometric Jacobian as free functions of an immutable chain.
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <vector>
 
 #include "vrreg/kinematics/joint_vector.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"

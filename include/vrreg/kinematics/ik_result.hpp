@@ -20,8 +20,8 @@ struct IkOptions {
   double singular_tolerance = 1e-9;
   /// Reach tolerance [m]: a pose this far outside the workspace is still solved on its boundary.
   double reach_tolerance_m = 1e-9;
-  /// Value [rad] given to the free joint at an exact singularity (UR: q6 at sin q5 = 0; LWR:
-  /// theta3 at sin theta2 = 0 and theta7 at sin theta6 = 0).
+  /// Joint value [rad] given to the free joint at a singularity (UR: q6 when sin q5 ~ 0; LWR:
+  /// q3 when sin theta2 ~ 0, q7 when sin theta6 ~ 0; before the configuration flips).
   double singular_free_angle_rad = 0.0;
 
   /// Throws InputError when a field is out of range.
@@ -31,10 +31,16 @@ struct IkOptions {
 /// Bit flags of the singular cases an IK query or a solution touches.
 enum Singularity : std::uint8_t {
   kNoSingularity = 0,
-  kWristSingular = 1,     ///< UR: sin q5 ~ 0 (q6 free); LWR: sin theta6 ~ 0 (theta5 + theta7 free)
-  kShoulderSingular = 2,  ///< UR: wrist centre on the joint-1 axis cylinder; LWR: sin theta2 ~ 0
-  kElbowSingular = 4,     ///< UR: sin q3 ~ 0; LWR: theta4 ~ 0 (arm stretched, psi undefined)
-  kArmAngleSingular = 8,  ///< LWR: shoulder-wrist axis on the joint-1 axis (reference plane undefined)
+  /// UR: sin q5 ~ 0 (joints 4 and 6 aligned, q6 free); LWR: sin theta6 ~ 0 (joints 5, 7 aligned).
+  kWristSingular = 1,
+  /// UR: wrist centre at distance d4 from the joint-1 axis (the two shoulder branches meet);
+  /// LWR: sin theta2 ~ 0 (joints 1 and 3 aligned).
+  kShoulderSingular = 2,
+  /// UR: sin q3 ~ 0 (arm stretched or folded); LWR: sin theta4 ~ 0 (psi ill-defined).
+  kElbowSingular = 4,
+  /// LWR: the shoulder-wrist axis lies on the joint-1 axis (the psi reference plane is undefined;
+  /// theta1 = 0 is taken for the reference elbow).
+  kArmAngleSingular = 8,
 };
 
 /// Comma-separated names of the flags set in `flags` ("none" when none).
@@ -42,9 +48,9 @@ std::string singularity_names(std::uint8_t flags);
 
 /// Outcome of an IK query.
 enum class IkStatus {
-  kOk,                 ///< at least one solution
-  kUnreachable,        ///< the pose is outside the workspace (see message)
-  kOutsideLimits,      ///< solutions exist but none within the joint limits
+  kOk,             ///< at least one solution
+  kUnreachable,    ///< the pose is outside the workspace (see message)
+  kOutsideLimits,  ///< solutions exist but none within the joint limits
 };
 
 /// Lower-case name of a status ("ok", "unreachable", "outside-limits").
@@ -52,18 +58,18 @@ const char* to_string(IkStatus status);
 
 /// One joint-space solution.
 struct IkSolution {
-  JointVector q_rad;                 ///< joint values [rad], shifted into the limits
-  ConfigurationLabel config;         ///< branch label
+  JointVector q_rad;                       ///< joint values [rad], shifted into the limits
+  ConfigurationLabel config;               ///< branch label
   std::uint8_t singular = kNoSingularity;  ///< Singularity flags of this solution
 };
 
 /// All solutions of one query, ordered by configuration index.
 struct IkResult {
   IkStatus status = IkStatus::kUnreachable;
-  std::string message;               ///< why there is no solution (empty when ok)
+  std::string message;  ///< why there is no solution (empty when ok)
   std::vector<IkSolution> solutions;
   std::uint8_t singular = kNoSingularity;  ///< union of the flags of all branches
-  int n_outside_limits = 0;          ///< branches dropped by the joint limits
+  int n_outside_limits = 0;                ///< branches dropped by the joint limits
 
   [[nodiscard]] bool ok() const { return status == IkStatus::kOk; }
 };

@@ -1,8 +1,7 @@
 #pragma once
 // One entry point over the analytic solvers, chosen by the chain's family.
-#include <optional>
-
 #include <Eigen/Geometry>
+#include <optional>
 
 #include "vrreg/kinematics/configuration_label.hpp"
 #include "vrreg/kinematics/ik_result.hpp"

@@ -1,10 +1,9 @@
 #pragma once
 // Distances between arm configurations in joint space, with angle wrapping, and selection of the
 // nearest configuration (paper section 4.4, Strategies 2 and 3; design.md section 4).
+#include <Eigen/Core>
 #include <optional>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/kinematics/joint_vector.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"

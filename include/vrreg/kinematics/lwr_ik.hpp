@@ -7,9 +7,8 @@
 // u, from shoulder S to wrist W), measured from the reference elbow: the one with theta3 = 0 and
 // theta4 > 0 that reaches W with theta1 = atan2(W_y - S_y, W_x - S_x). All 8 global
 // configurations (signs of theta2, theta4, theta6) of one (pose, psi) share the same elbow point.
-#include <string>
-
 #include <Eigen/Geometry>
+#include <string>
 
 #include "vrreg/kinematics/configuration_label.hpp"
 #include "vrreg/kinematics/ik_result.hpp"
@@ -25,9 +24,10 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
 /// What a joint vector of an LWR-structured chain is: its pose, arm angle and configuration.
 struct LwrArmState {
   Eigen::Isometry3d T_base_tcp = Eigen::Isometry3d::Identity();  ///< TCP pose, base frame (m)
-  double psi_rad = 0.0;                    ///< arm angle in (-pi, pi]
-  ConfigurationLabel config;               ///< global configuration (signs of theta2/4/6)
-  std::uint8_t singular = kNoSingularity;  ///< Singularity flags (psi ill-defined if kElbowSingular)
+  double psi_rad = 0.0;                                          ///< arm angle in (-pi, pi]
+  ConfigurationLabel config;  ///< global configuration (signs of theta2/4/6)
+  std::uint8_t singular =
+      kNoSingularity;  ///< Singularity flags (psi ill-defined if kElbowSingular)
 };
 
 /// The inverse of lwr_inverse_kinematics: pose, arm angle and configuration of `q_rad` [rad].

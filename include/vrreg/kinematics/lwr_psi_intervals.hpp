@@ -1,11 +1,10 @@
 #pragma once
 // Feasible arm angles of the KUKA LWR 4+ for one pose, per global configuration, under the joint
 // limits (the analytic counterpart of Faria et al. 2018). psi as defined in lwr_ik.hpp.
+#include <Eigen/Geometry>
 #include <array>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "vrreg/kinematics/ik_result.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"

@@ -2,11 +2,10 @@
 // An immutable serial chain of revolute joints: DH table, joint limits, base and tool transforms.
 // Frames: "base" is the robot frame poses are given in, "dh0" the DH base frame, "flange" the last
 // DH frame, "tcp" the tool centre point (e.g. the centre of a tracked sphere).
+#include <Eigen/Geometry>
 #include <numbers>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "vrreg/kinematics/dh.hpp"
 #include "vrreg/kinematics/joint_vector.hpp"
@@ -60,7 +59,8 @@ class SerialChain {
   [[nodiscard]] SerialChain with_name(std::string name) const;
 
   /// Maps a TCP pose in the base frame to the flange pose in the DH base frame.
-  [[nodiscard]] Eigen::Isometry3d dh0_flange_from_base_tcp(const Eigen::Isometry3d& T_base_tcp) const;
+  [[nodiscard]] Eigen::Isometry3d dh0_flange_from_base_tcp(
+      const Eigen::Isometry3d& T_base_tcp) const;
   /// True when every joint of `q_rad` lies in its limits, widened by `tolerance_rad`.
   [[nodiscard]] bool within_limits(const JointRef& q_rad, double tolerance_rad = 0.0) const;
   /// Throws InputError unless `q_rad` has n_joints() finite entries; `what` names the caller.

@@ -1,13 +1,14 @@
 #pragma once
 // Closed-form IK of Universal Robots arms (UR3/5/10, e-Series): every solution, up to 8.
-// Structure required (ChainFamily::kUr): alpha = [pi/2, 0, 0, pi/2, -pi/2, 0], a1 = a4 = a5 = a6 = 0
-// (d2 and d3 may be non-zero; theta offsets are allowed).
+// Structure required (ChainFamily::kUr): alpha = [pi/2, 0, 0, pi/2, -pi/2, 0], a1 = a4 = a5 = a6 =
+// 0 (d2 and d3 may be non-zero; theta offsets are allowed).
 //
 // Labels (geometric, so any joint vector has one): with h the reach of the wrist centre along x1
 // in the arm plane, shoulder-right iff h * d4 > 0 (the wrist centre lies right of the upper arm,
 // seen from above looking along the reach; q = 0 is shoulder-left); elbow-up iff the elbow (frame
-// 2 origin) lies above the line from the shoulder to the wrist (frame 3 origin); wrist-flip iff
-// sin(theta5) < 0.
+// 2 origin) lies above the line from the shoulder to the wrist (frame 3 origin), i.e.
+// x * (-a2 a3 sin theta3) > 0 with x the reach of frame 3 along x1 (x = 0 counts as positive);
+// wrist-flip iff sin(theta5) < 0. Index bits: 4 shoulder-right, 2 elbow-down, 1 wrist-flip.
 #include <Eigen/Geometry>
 
 #include "vrreg/kinematics/configuration_label.hpp"

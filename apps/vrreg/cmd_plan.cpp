@@ -1,0 +1,194 @@
+// vrreg plan: Procedure 1, "where to measure" (paper section 6, Fig. 16). For each part point a
+// cube of fiducials on a grid (placement tolerance +-S, spacing A), the d_min > 2.5 sigma_noise
+// check (Eq. 9), joints for every location nearest its part point's, and a visiting order; the
+// plan is written as a CSV a robot program (or `vrreg simulate --plan`) can follow.
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <cctype>
+
+#include "cli_support.hpp"
+#include "command_registry.hpp"
+#include "plan_output.hpp"
+#include "robot_cli.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/io/file_error.hpp"
+#include "vrreg/io/parts_csv.hpp"
+#include "vrreg/io/plan_csv.hpp"
+#include "vrreg/kinematics/pose.hpp"
+#include "vrreg/simulation/testbed.hpp"
+
+namespace vrreg::cli {
+namespace {
+
+using kinematics::ChainFamily;
+
+// Default SIR standoff along the flange z axis for robots without a test bed or tool [m].
+constexpr double kDefaultToolOffsetM = 0.06;
+// sigma_noise of the paper's KUKA LWR 4+ test bed (section 5.2) [m].
+constexpr double kPaperKukaSigmaNoiseM = 0.077e-3;
+
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+// The robot, the planning options and where their defaults came from.
+PlanSetup make_setup(const PlanArgs& args) {
+  PlanSetup s{robot_from_args(args.robot, args.tool_mm), {}, {}, {}};
+  const std::string name = lower(args.robot);
+  std::optional<simulation::Testbed> testbed;
+  if (name == "ur5" || name == "lwr4") testbed = simulation::testbed_by_name(name);
+  if (args.tool_mm.empty()) {
+    if (testbed) {
+      s.chain = s.chain.with_tool(testbed->nominal.T_flange_tcp());
+      s.notes.push_back("tool offset: the simulated " + name + " test bed's");
+    } else if (s.chain.T_flange_tcp().matrix() == Eigen::Matrix4d::Identity()) {
+      s.chain = s.chain.with_tool(Eigen::Isometry3d(Eigen::Translation3d(0, 0, kDefaultToolOffsetM)));
+      s.notes.push_back("tool offset: default 60 mm along the flange z axis (give --tool-mm)");
+    }
+  }
+  planning::PlanOptions& o = s.options;
+  o.halfwidth_m = units::mm_to_m(args.halfwidth_mm);
+  o.spacing_m = units::mm_to_m(args.spacing_mm);
+  VRREG_THROW_UNLESS(std::isfinite(args.sigma_noise_mm.value_or(1.0)),
+                     "--sigma-noise-mm is not a finite number");
+  if (args.sigma_noise_mm) {
+    o.sigma_noise_m = units::mm_to_m(*args.sigma_noise_mm);
+  } else if (testbed && s.chain.family() == ChainFamily::kLwr) {
+    o.sigma_noise_m = kPaperKukaSigmaNoiseM;
+    s.notes.push_back("sigma_noise: 0.077 mm, the paper's KUKA LWR 4+ value (section 5.2)");
+  } else {
+    o.sigma_noise_m = planning::kPaperSigmaNoiseM;
+    s.notes.push_back("sigma_noise: 0.114 mm, the paper's UR5 value (Table 1, A1)");
+  }
+  o.force = args.force;
+  o.arm.norm = args.norm == "linf" ? kinematics::JointNorm::kLinf : kinematics::JointNorm::kL2;
+  if (!args.rpy_deg.empty()) {
+    check_finite(args.rpy_deg, "--rpy-deg");
+    o.arm.R_base_tcp = kinematics::rotation_from_rpy(units::deg_to_rad(args.rpy_deg[0]),
+                                                     units::deg_to_rad(args.rpy_deg[1]),
+                                                     units::deg_to_rad(args.rpy_deg[2]));
+  } else if (testbed) {
+    o.arm.R_base_tcp = testbed->tcp_rotation;
+    s.notes.push_back("tool orientation: the simulated " + name + " test bed's");
+  } else {
+    s.notes.push_back("tool orientation: pointing down (rpy 180 0 0 deg; give --rpy-deg)");
+  }
+  if (args.psi_deg) {
+    VRREG_THROW_UNLESS(std::isfinite(*args.psi_deg), "--psi-deg is not a finite number");
+    VRREG_THROW_UNLESS(s.chain.family() == ChainFamily::kLwr,
+                       "--psi-deg applies to 7-joint arms (lwr4); robot '" << s.chain.name()
+                                                                          << "' has none");
+    o.arm.psi_rad = units::deg_to_rad(*args.psi_deg);
+  } else if (testbed && s.chain.family() == ChainFamily::kLwr) {
+    o.arm.psi_rad = testbed->arm_angle_rad;
+    s.notes.push_back("arm angle psi: the simulated " + name + " test bed's");
+  }
+  if (!args.home_deg.empty()) {
+    check_finite(args.home_deg, "--home-deg");
+    VRREG_THROW_UNLESS(static_cast<int>(args.home_deg.size()) == s.chain.n_joints(),
+                       "--home-deg: robot '" << s.chain.name() << "' has " << s.chain.n_joints()
+                                             << " joints, got " << args.home_deg.size());
+    kinematics::JointVector home(s.chain.n_joints());
+    for (int i = 0; i < home.size(); ++i) {
+      home(i) = units::deg_to_rad(args.home_deg[static_cast<std::size_t>(i)]);
+    }
+    o.arm.home_q_rad = home;
+  } else if (testbed) {
+    o.arm.home_q_rad = testbed->home_q_rad;
+    s.notes.push_back("home joints: the simulated " + name + " test bed's");
+  }
+  return s;
+}
+
+void run_plan_unchecked(const PlanArgs& args) {
+  PlanSetup setup = make_setup(args);
+  const std::vector<io::PartRecord> records = io::read_parts_csv(args.parts);
+  for (const io::PartRecord& r : records) setup.parts.push_back({r.point, r.robot_m});
+
+  // Eq. 9 first, with the option that overrides it named.
+  const planning::CubeGeometry cube =
+      planning::cube_geometry(setup.options.halfwidth_m, setup.options.spacing_m);
+  try {
+    (void)planning::check_dmin(cube.d_min_m(), setup.options.sigma_noise_m, setup.options.force);
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + " (--force plans anyway)");
+  }
+  const planning::PlanResult plan = planning::make_plan(setup.chain, setup.parts, setup.options);
+  if (!plan.ok()) {
+    throw InputError(args.parts + ": " + plan.message +
+                     ". Check that the part points are in the robot base frame, or change "
+                     "--rpy-deg, --home-deg or --psi-deg (see vrreg ik)");
+  }
+  if (!args.output.empty()) {
+    io::write_plan_csv(args.output, plan_rows(plan), plan_comments(args, setup, plan));
+  }
+  if (args.json) {
+    print_json(plan_json(args, setup, plan));
+  } else {
+    print_plan_summary(args, setup, plan);
+  }
+}
+
+void run_plan(const PlanArgs& args) {
+  try {
+    run_plan_unchecked(args);
+  } catch (const io::FileError&) {
+    throw;  // already names file and line
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    throw InputError(what.starts_with("plan: ") ? what : "plan: " + what);
+  }
+}
+
+void add_plan_command(CLI::App& app) {
+  auto args = std::make_shared<PlanArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "plan", "Procedure 1 (paper section 6): where to measure fiducials around M part points, "
+              "with joints and a visiting order, as a plan CSV");
+  cmd->add_option("--parts", args->parts,
+                  "CSV of part points: point,robot_x_mm,robot_y_mm,robot_z_mm (robot base frame), "
+                  "or a measurement CSV whose target rows are the part points")
+      ->required();
+  cmd->add_option("--halfwidth-mm", args->halfwidth_mm,
+                  "placement tolerance S in mm: each part point may land within +-S (rounded up "
+                  "so the part point sits at a grid cell's centre)")
+      ->required()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--spacing-mm", args->spacing_mm, "grid spacing A in mm")
+      ->required()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--robot", args->robot,
+                  "ur5, lwr4 (defaults from the simulated test bed), ur3, ur10, ur5e, or a robot "
+                  "file")
+      ->required();
+  cmd->add_option("--sigma-noise-mm", args->sigma_noise_mm,
+                  "noise sigma_noise in mm for d_min > 2.5 sigma_noise (Eq. 9); default the "
+                  "paper's: 0.114 (Table 1, UR5), 0.077 for lwr4 (section 5.2)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--force", args->force, "write the plan even when d_min <= 2.5 sigma_noise");
+  cmd->add_option("--tool-mm", args->tool_mm, "TCP (tracked sphere) offset X Y Z in the flange "
+                                              "frame, mm")
+      ->expected(3);
+  cmd->add_option("--rpy-deg", args->rpy_deg,
+                  "fixed TCP orientation ROLL PITCH YAW in deg, R = Rz(yaw) Ry(pitch) Rx(roll)")
+      ->expected(3);
+  cmd->add_option("--psi-deg", args->psi_deg, "LWR arm angle psi in deg for every location");
+  cmd->add_option("--home-deg", args->home_deg,
+                  "joints Q1 ... QN in deg: each part point takes the IK solution nearest these")
+      ->expected(1, kinematics::kMaxJoints);
+  cmd->add_option("--norm", args->norm, "joint-space distance for 'nearest': l2 (paper) or linf")
+      ->check(CLI::IsMember({"l2", "linf"}));
+  cmd->add_option("-o,--output", args->output, "write the plan CSV here");
+  cmd->add_flag("--json", args->json, "print one JSON object instead of the summary");
+  cmd->callback([args] { run_plan(*args); });
+}
+
+}  // namespace
+
+VRREG_REGISTER_COMMAND(50, add_plan_command);
+
+}  // namespace vrreg::cli

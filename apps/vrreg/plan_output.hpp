@@ -1,0 +1,55 @@
+#pragma once
+// `vrreg plan` output: the plan CSV rows and comment header, the summary and its JSON form.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "vrreg/io/plan_csv.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
+#include "vrreg/planning/plan.hpp"
+
+namespace vrreg::cli {
+
+/// Command-line arguments of `vrreg plan`.
+struct PlanArgs {
+  std::string parts;
+  double halfwidth_mm = 0.0;
+  double spacing_mm = 0.0;
+  std::string robot;
+  std::optional<double> sigma_noise_mm;
+  bool force = false;
+  std::vector<double> tool_mm;
+  std::vector<double> rpy_deg;
+  std::optional<double> psi_deg;
+  std::vector<double> home_deg;
+  std::string norm = "l2";
+  std::string output;
+  bool json = false;
+};
+
+/// The robot, part points and options a plan was made with, and where the defaults came from.
+struct PlanSetup {
+  kinematics::SerialChain chain;
+  std::vector<planning::PartPoint> parts;
+  planning::PlanOptions options;
+  std::vector<std::string> notes;  ///< e.g. "tool orientation: the simulated ur5 test bed's"
+};
+
+/// Plan locations as plan CSV rows (visiting order).
+std::vector<io::PlanRow> plan_rows(const planning::PlanResult& plan);
+
+/// The comment header of the plan CSV: every parameter, "key: value" per line.
+std::vector<std::string> plan_comments(const PlanArgs& args, const PlanSetup& setup,
+                                       const planning::PlanResult& plan);
+
+/// The summary as one JSON object (lengths in mm, angles in deg).
+nlohmann::json plan_json(const PlanArgs& args, const PlanSetup& setup,
+                         const planning::PlanResult& plan);
+
+/// Prints the human summary (mm) to stdout.
+void print_plan_summary(const PlanArgs& args, const PlanSetup& setup,
+                        const planning::PlanResult& plan);
+
+}  // namespace vrreg::cli

@@ -1,0 +1,63 @@
+#pragma once
+// Acquisition of a dataset on a simulated test bed (paper sections 4.1, 4.2): the controller
+// turns each nominal location into joints with the nominal model, the robot lands where its
+// actual model and errors put it, and the tracker reads the sphere K times per visit.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "vrreg/core/types.hpp"
+#include "vrreg/kinematics/joint_vector.hpp"
+#include "vrreg/simulation/dataset_plan.hpp"
+#include "vrreg/simulation/robot_error_model.hpp"
+#include "vrreg/simulation/testbed.hpp"
+
+namespace vrreg::simulation {
+
+/// What to simulate beyond the test bed and dataset.
+struct SimulationOptions {
+  std::uint64_t seed = 1;                   ///< decides the robot (DH errors, phases) and noise
+  std::optional<TestbedErrorModel> errors;  ///< empty: the test bed's defaults
+};
+
+/// One visit of the arm: a location in one arm configuration.
+struct SimulatedVisit {
+  int location = 0;                ///< index into SimulatedDataset::locations
+  int config = 0;                  ///< LWR: label 1..4 in the IK module's order; UR: 0 (none)
+  kinematics::JointVector q_rad;   ///< commanded joints, as the controller reports them [rad]
+  Eigen::Vector3d tcp_m = Eigen::Vector3d::Zero();  ///< true TCP position of the visit [m, base]
+};
+
+/// One tracker reading of a visit.
+struct SimulatedReading {
+  int visit = 0;   ///< index into SimulatedDataset::visits
+  int repeat = 0;  ///< 0..K-1
+  Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();  ///< measured position, sensor frame [m]
+};
+
+/// A simulated dataset: locations, visits and readings in visiting order, plus the truth.
+struct SimulatedDataset {
+  std::string testbed;               ///< "ur5" or "lwr4"
+  Dataset dataset = Dataset::kA1;
+  std::uint64_t seed = 0;
+  TestbedErrorModel errors;          ///< the error model used
+  RobotErrors robot;                 ///< the robot the seed drew
+  RigidTransform T_robot_sensor;     ///< the true tracker pose
+  double sigma_rep_spec_m = 0.0;     ///< the robot's specified repeatability
+  std::vector<PlannedLocation> locations;
+  std::vector<SimulatedVisit> visits;
+  std::vector<SimulatedReading> readings;
+};
+
+/// Simulates `dataset` on `testbed`. Throws InputError for a dataset of the other test bed or an
+/// invalid error model. Same inputs, same result, bit for bit (vrreg::Random streams only).
+SimulatedDataset simulate_dataset(const Testbed& testbed, Dataset dataset,
+                                  const SimulationOptions& options = {});
+
+/// Per-visit mean of the readings [m, sensor frame], one column per visit.
+Points3 visit_means_m(const SimulatedDataset& data);
+
+}  // namespace vrreg::simulation

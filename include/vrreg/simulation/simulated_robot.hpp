@@ -1,0 +1,42 @@
+#pragma once
+// A robot as it really moves: the controller commands joints computed with the nominal model;
+// the arm takes those joints plus its transmission error and gravity deflection, and the TCP
+// lands where the actual (perturbed) DH model puts it, give or take the repeatability.
+#include <Eigen/Core>
+
+#include "vrreg/core/random.hpp"
+#include "vrreg/kinematics/joint_vector.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
+#include "vrreg/simulation/robot_error_model.hpp"
+
+namespace vrreg::simulation {
+
+/// The nominal chain, the actual chain (nominal DH + drawn errors) and the joint-level errors.
+class SimulatedRobot {
+ public:
+  /// `nominal`: the controller's model with the tracked point as TCP; `errors` drawn from `model`
+  /// for this chain (throws InputError when the sizes do not match).
+  SimulatedRobot(kinematics::SerialChain nominal, RobotErrorModel model, RobotErrors errors);
+
+  [[nodiscard]] const kinematics::SerialChain& nominal() const { return nominal_; }
+  [[nodiscard]] const kinematics::SerialChain& actual() const { return actual_; }
+  [[nodiscard]] const RobotErrorModel& model() const { return model_; }
+  [[nodiscard]] const RobotErrors& errors() const { return errors_; }
+
+  /// Joint angles the arm really takes for commanded joints `q_cmd_rad` [rad]: plus the
+  /// transmission error and, when enabled, the gravity deflection.
+  [[nodiscard]] kinematics::JointVector actual_joints(const kinematics::JointRef& q_cmd_rad) const;
+  /// Where the TCP really is for commanded joints, without repeatability [m, base frame].
+  [[nodiscard]] Eigen::Vector3d actual_tcp_m(const kinematics::JointRef& q_cmd_rad) const;
+  /// One visit: actual_tcp_m plus a repeatability draw (Gaussian per base axis) [m].
+  [[nodiscard]] Eigen::Vector3d visit_tcp_m(const kinematics::JointRef& q_cmd_rad,
+                                            Random& rng) const;
+
+ private:
+  kinematics::SerialChain nominal_;
+  kinematics::SerialChain actual_;
+  RobotErrorModel model_;
+  RobotErrors errors_;
+};
+
+}  // namespace vrreg::simulation

@@ -1,0 +1,52 @@
+#include "vrreg/experiments/rrbc_run.hpp"
+
+#include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/correction/rrbc.hpp"
+#include "vrreg/metrics/errors.hpp"
+#include "vrreg/metrics/improvement.hpp"
+#include "vrreg/metrics/noise.hpp"
+#include "vrreg/metrics/rigid_body.hpp"
+#include "vrreg/registration/rigid.hpp"
+
+namespace vrreg::experiments {
+
+RrbcRunFigures run_rrbc(const MeasurementSet& set, const std::vector<std::size_t>& fiducials,
+                        const std::vector<std::size_t>& targets, const RrbcRunOptions& options) {
+  const Points3 fid_sensor = set.sensor_points(fiducials);
+  const Points3 fid_robot = set.robot_points(fiducials);
+  const Points3 tgt_sensor = set.sensor_points(targets);
+  const Points3 tgt_robot = set.robot_points(targets);
+
+  RegistrationModel model;
+  model.source = set.source;
+  const RegistrationResult reg = register_rigid(fid_sensor, fid_robot);
+  model.T_robot_sensor = reg.T_robot_sensor;
+  model.fre_m = reg.fre_m;
+  for (std::size_t i : fiducials) model.fiducials.push_back(set.locations[i]);
+  model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, fid_sensor, fid_robot);
+  model.interpolation = options.interpolation;
+
+  RrbcRunFigures f;
+  f.n_fiducials = static_cast<int>(fiducials.size());
+  f.n_targets = static_cast<int>(targets.size());
+  if (options.rigid_body_statistics) {
+    f.sigma_l_m = rigid_body_statistics(fid_sensor, fid_robot).sigma_l_m;
+  }
+  f.sigma_opt_m = options.sigma_opt_m ? *options.sigma_opt_m
+                                      : sigma_opt_m(model.fiducials).value_or(0.0);
+  f.sigma_noise_m = sigma_noise_m(f.sigma_opt_m, options.sigma_rep_m);
+  if (f.sigma_noise_m > 0.0) f.rho = rho(f.sigma_l_m, f.sigma_noise_m);
+
+  const TargetCorrection c = correct_targets(model, tgt_sensor, tgt_robot, options.interpolation);
+  const Eigen::VectorXd unc = point_errors(c.uncorrected_robot_m, tgt_robot);
+  const Eigen::VectorXd cor = point_errors(c.corrected_robot_m, tgt_robot);
+  const ImprovementSummary s = summarize_improvement(unc, cor);
+  f.unc_rms_t_m = s.unc_rms_t_m;
+  f.cor_rms_t_m = s.cor_rms_t_m;
+  f.gamma = s.gamma;
+  f.n_bad = s.n_bad;
+  f.n_flagged = c.n_flagged;
+  return f;
+}
+
+}  // namespace vrreg::experiments

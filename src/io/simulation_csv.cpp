@@ -1,0 +1,137 @@
+#include "vrreg/io/simulation_csv.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+#include "vrreg/core/units.hpp"
+#include "vrreg/kinematics/pose.hpp"
+
+namespace vrreg::io {
+namespace {
+
+using units::m_to_mm;
+using units::rad_to_deg;
+
+std::string join(const std::vector<double>& values, double scale, int precision) {
+  std::ostringstream out;
+  out.precision(precision);
+  out << '[';
+  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values[i] * scale;
+  out << ']';
+  return out.str();
+}
+
+std::string g(double value, int precision = 6) {
+  std::ostringstream out;
+  out.precision(precision);
+  out << value;
+  return out.str();
+}
+
+void describe_errors(const simulation::TestbedErrorModel& errors, std::vector<std::string>& out) {
+  const simulation::RobotErrorModel& r = errors.robot;
+  const simulation::TrackerModel& t = errors.tracker;
+  out.push_back("robot errors: joint offset sigma " + g(rad_to_deg(r.joint_offset_sigma_rad)) +
+                " deg, link length (a) sigma " + g(m_to_mm(r.link_length_sigma_m)) +
+                " mm, link offset (d) sigma " + g(m_to_mm(r.link_offset_sigma_m)) +
+                " mm, twist (alpha) sigma " + g(rad_to_deg(r.twist_sigma_rad)) + " deg");
+  out.push_back("transmission error A sin(2 pi q / P + phi): A_arcmin " +
+                join(r.transmission_amplitude_rad, rad_to_deg(1.0) * 60.0, 6) + ", P_deg " +
+                join(r.transmission_period_rad, rad_to_deg(1.0), 6));
+  out.push_back("repeatability sigma " + g(m_to_mm(r.repeatability_sigma_m)) +
+                " mm per axis, drawn once per visit; compliance under gravity " +
+                (r.compliance ? "on: link_mass_kg " + join(r.link_mass_kg, 1.0, 6) +
+                                    ", stiffness_nm_per_rad " +
+                                    join(r.joint_stiffness_nm_per_rad, 1.0, 6) + ", payload_kg " +
+                                    g(r.payload_kg)
+                              : std::string("off")));
+  out.push_back("tracker: " + g(t.distance_m) + " m from the volume centre, azimuth " +
+                g(rad_to_deg(t.azimuth_rad)) + " deg, elevation " + g(rad_to_deg(t.elevation_rad)) +
+                " deg; noise sigma per reading per sensor axis (x, y, z) [" +
+                g(m_to_mm(t.noise_sigma_m.x())) + ", " + g(m_to_mm(t.noise_sigma_m.y())) + ", " +
+                g(m_to_mm(t.noise_sigma_m.z())) + "] mm; K = " +
+                std::to_string(t.readings_per_location) + " readings per visit");
+}
+
+void describe_robot(const simulation::SimulatedDataset& data, std::vector<std::string>& out) {
+  out.push_back("drawn robot (actual - nominal DH, transmission phase):");
+  for (std::size_t i = 0; i < data.robot.dh_delta.size(); ++i) {
+    const kinematics::DhRow& d = data.robot.dh_delta[i];
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "  joint %zu: dtheta %+.5f deg, da %+.4f mm, dd %+.4f mm, dalpha %+.5f deg", i + 1,
+                  rad_to_deg(d.theta_offset_rad), m_to_mm(d.a_m), m_to_mm(d.d_m),
+                  rad_to_deg(d.alpha_rad));
+    std::string text = line;
+    if (i < data.robot.transmission_phase_rad.size()) {
+      text += ", phase " + g(rad_to_deg(data.robot.transmission_phase_rad[i]), 5) + " deg";
+    }
+    out.push_back(text);
+  }
+}
+
+}  // namespace
+
+std::vector<Reading> simulated_readings(const simulation::SimulatedDataset& data) {
+  const bool lwr = data.dataset == simulation::Dataset::kGrid;
+  std::vector<Reading> rows;
+  rows.reserve(data.readings.size());
+  for (const simulation::SimulatedReading& r : data.readings) {
+    const simulation::SimulatedVisit& visit = data.visits[static_cast<std::size_t>(r.visit)];
+    const simulation::PlannedLocation& location =
+        data.locations[static_cast<std::size_t>(visit.location)];
+    Reading row;
+    row.point = location.point;
+    row.role = location.role;
+    row.robot_m = location.robot_m;
+    row.sensor_m = r.sensor_m;
+    if (lwr) row.config = visit.config;
+    row.q_rad.assign(visit.q_rad.data(), visit.q_rad.data() + visit.q_rad.size());
+    row.repeat = r.repeat;
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::vector<std::string> simulated_dataset_comments(const simulation::SimulatedDataset& data) {
+  std::vector<std::string> out;
+  const bool lwr = data.dataset == simulation::Dataset::kGrid;
+  out.push_back("vrreg simulate: test bed " + data.testbed + ", dataset " +
+                simulation::to_string(data.dataset) + ", seed " + std::to_string(data.seed));
+  std::size_t targets = 0;
+  for (const auto& l : data.locations) targets += l.role == Role::kTarget ? 1 : 0;
+  out.push_back(std::to_string(data.locations.size()) + " nominal locations (" +
+                std::to_string(data.locations.size() - targets) + " fiducials, " +
+                std::to_string(targets) + " targets), " + std::to_string(data.visits.size()) +
+                " visits, " + std::to_string(data.readings.size()) + " readings; rows in visiting order");
+  if (lwr) {
+    out.push_back("config = position (1..4) in the analytic IK's list, which ranks the four "
+                  "configurations by joint distance to the home posture (Strategy 1 order)");
+  } else {
+    out.push_back("UR controller: one IK solution per location, nearest the previous joints");
+  }
+  if (data.dataset == simulation::Dataset::kB) {
+    out.push_back("B labels: target = A1 grid label, fiducial = target label + _a<cube edge mm>_c<corner>"
+                  " (corner bits 1 = +x, 2 = +y, 4 = +z); 50 mm cube corners of neighbouring "
+                  "targets share nominal positions, each visited once per target");
+  }
+  describe_errors(data.errors, out);
+  describe_robot(data, out);
+  const Eigen::Vector3d rpy = kinematics::rpy_from_rotation(data.T_robot_sensor.rotation);
+  out.push_back("true tracker pose T_robot_sensor: translation [" +
+                g(m_to_mm(data.T_robot_sensor.translation_m.x()), 8) + ", " +
+                g(m_to_mm(data.T_robot_sensor.translation_m.y()), 8) + ", " +
+                g(m_to_mm(data.T_robot_sensor.translation_m.z()), 8) + "] mm, rpy [" +
+                g(rad_to_deg(rpy.x()), 8) + ", " + g(rad_to_deg(rpy.y()), 8) + ", " +
+                g(rad_to_deg(rpy.z()), 8) + "] deg");
+  out.push_back("robot repeatability spec (for sigma_noise, Eq. 9): " +
+                g(m_to_mm(data.sigma_rep_spec_m)) + " mm");
+  return out;
+}
+
+void write_simulated_dataset_csv(const std::string& path,
+                                 const simulation::SimulatedDataset& data) {
+  write_measurement_csv(path, simulated_readings(data), simulated_dataset_comments(data));
+}
+
+}  // namespace vrreg::io
