@@ -37,12 +37,12 @@ std::vector<std::uint64_t> parse_seeds(const std::string& text) {
       std::uint64_t last = first;
       if (dash != std::string::npos) {
         last = std::stoull(part.substr(dash + 1), &used);
-        VRREG_THROW_UNLESS(used == part.size() - dash - 1 && last >= first && last - first < 10000, "");
+        VRREG_THROW_UNLESS(used == part.size() - dash - 1 && last >= first && last - first < 10000,
+                           "");
       }
       for (std::uint64_t s = first; s <= last; ++s) seeds.push_back(s);
     } catch (const std::exception&) {
-      VRREG_THROW_UNLESS(false, "--seeds: cannot read '" << part
-                                                        << "' (use e.g. 1-10 or 1,3,5-7)");
+      VRREG_THROW_UNLESS(false, "--seeds: cannot read '" << part << "' (use e.g. 1-10 or 1,3,5-7)");
     }
   }
   VRREG_THROW_UNLESS(!seeds.empty(), "--seeds: no seeds in '" << text << "'");

@@ -5,6 +5,7 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "strategy_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/correction/correct_targets.hpp"
@@ -28,12 +29,14 @@ void run_correct(const CorrectArgs& args) {
   const RegistrationModel model = io::read_model_json(args.model);
   io::CsvReadOptions read_options;
   read_options.require_robot = false;  // points to correct need only their sensor position
-  const MeasurementSet set = io::read_measurement_csv(args.points, read_options);
+  MeasurementSet set = io::read_measurement_csv(args.points, read_options);
+  const int strategy = model.procedure2.strategy;  // Procedure 2 (section 4.4): as registered
+  if (strategy == 2) set = relabel_file(set, joint_norm({}, &model)).set;
   const std::optional<int> config = args.config ? args.config : model.config;
   const std::vector<std::size_t> rows = select_rows(set, Role::kTarget, config);
   const InterpolationSettings settings = args.interpolation.apply(model.interpolation);
   Points3 nominal(3, 0);
-  if (settings.method == InterpolationMethod::kOctuplet) {
+  if (settings.method == InterpolationMethod::kOctuplet || strategy == 3) {
     for (std::size_t i : rows) {
       VRREG_THROW_UNLESS(set.locations[i].has_robot,
                          args.points << ":" << set.locations[i].source_line
@@ -43,7 +46,8 @@ void run_correct(const CorrectArgs& args) {
     nominal = set.robot_points(rows);
   }
   const TargetCorrection c =
-      correct_targets(model, set.sensor_points(rows), nominal, settings);
+      strategy == 3 ? correct_strategy3(model, set, rows, settings, joint_norm({}, &model))
+                    : correct_targets(model, set.sensor_points(rows), nominal, settings);
 
   std::ostringstream out;
   out.precision(12);

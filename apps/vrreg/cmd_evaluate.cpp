@@ -5,6 +5,8 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "strategy_cli.hpp"
+#include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/io/atomic_write.hpp"
@@ -21,6 +23,7 @@ struct EvaluateArgs {
   std::string targets;
   std::optional<int> config;
   InterpolationFlags interpolation;
+  StrategyFlags strategy;
   std::string per_target;
   bool json = false;
 };
@@ -48,15 +51,27 @@ std::string per_target_csv(const MeasurementSet& set, const std::vector<std::siz
 
 void run_evaluate(const EvaluateArgs& args) {
   const RegistrationModel model = io::read_model_json(args.model);
-  const MeasurementSet set = io::read_measurement_csv(args.targets);
+  const int strategy = evaluate_strategy(args.strategy, model, args.model);
+  MeasurementSet set = io::read_measurement_csv(args.targets);
+  std::optional<planning::Strategy2Summary> relabelled;
+  if (strategy == 2) {  // the targets take the labels of their own path, like the fiducials did
+    planning::Strategy2Result r = relabel_file(set, joint_norm(args.strategy, &model));
+    set = std::move(r.set);
+    relabelled = r.summary;
+  }
   // A model built for one configuration is evaluated on that configuration unless told otherwise.
   const std::optional<int> config = args.config ? args.config : model.config;
+  VRREG_THROW_UNLESS(strategy != 1 || config,
+                     args.model << ": --strategy 1 evaluates one configuration: give --config N");
   const std::vector<std::size_t> rows = select_rows(set, Role::kTarget, config);
   const Points3 targets_sensor = set.sensor_points(rows);
   const Points3 targets_robot = set.robot_points(rows);
   const InterpolationSettings settings = args.interpolation.apply(model.interpolation);
 
-  const TargetCorrection c = correct_targets(model, targets_sensor, targets_robot, settings);
+  const TargetCorrection c =
+      strategy == 3
+          ? correct_strategy3(model, set, rows, settings, joint_norm(args.strategy, &model))
+          : correct_targets(model, targets_sensor, targets_robot, settings);
   // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.
   const Eigen::VectorXd unc = point_errors(c.uncorrected_robot_m, targets_robot);
   const Eigen::VectorXd cor = point_errors(c.corrected_robot_m, targets_robot);
@@ -87,11 +102,14 @@ void run_evaluate(const EvaluateArgs& args) {
     j["bad_targets"] = bad;
     j["unc_max_tre_mm"] = units::m_to_mm(unc.size() ? unc.maxCoeff() : 0.0);
     j["cor_max_tre_mm"] = units::m_to_mm(cor.size() ? cor.maxCoeff() : 0.0);
+    add_strategy_json(j, model, relabelled);
+    if (strategy == 1 && model.procedure2.strategy == 0) j["strategy"] = 1;
     print_json(j);
     return;
   }
   std::printf("evaluated %d targets from %s with model %s%s\n", s.n_targets, args.targets.c_str(),
               args.model.c_str(), config ? (" (config " + std::to_string(*config) + ")").c_str() : "");
+  print_strategy(model, relabelled);
   std::printf("  interpolation                 %s: %s\n", to_string(c.method_used), c.layout.c_str());
   if (c.n_flagged > 0) {
     std::printf("  not correctable               %d targets (outside the fiducials; left uncorrected)\n",
@@ -124,6 +142,7 @@ void add_evaluate_command(CLI::App& app) {
   cmd->add_option("--config", args->config,
                   "use only target rows with this configuration label (default: the model's)");
   args->interpolation.add_to(*cmd);
+  args->strategy.add_to(*cmd, false);
   cmd->add_option("--per-target", args->per_target, "write per-target errors (CSV, mm) here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_evaluate(*args); });

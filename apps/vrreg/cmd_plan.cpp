@@ -3,9 +3,9 @@
 // check (Eq. 9), joints for every location nearest its part point's, and a visiting order; the
 // plan is written as a CSV a robot program (or `vrreg simulate --plan`) can follow.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
-#include <cctype>
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
@@ -46,7 +46,8 @@ PlanSetup make_setup(const PlanArgs& args) {
       s.chain = s.chain.with_tool(testbed->nominal.T_flange_tcp());
       s.notes.push_back("tool offset: the simulated " + name + " test bed's");
     } else if (s.chain.T_flange_tcp().matrix() == Eigen::Matrix4d::Identity()) {
-      s.chain = s.chain.with_tool(Eigen::Isometry3d(Eigen::Translation3d(0, 0, kDefaultToolOffsetM)));
+      s.chain =
+          s.chain.with_tool(Eigen::Isometry3d(Eigen::Translation3d(0, 0, kDefaultToolOffsetM)));
       s.notes.push_back("tool offset: default 60 mm along the flange z axis (give --tool-mm)");
     }
   }
@@ -79,9 +80,9 @@ PlanSetup make_setup(const PlanArgs& args) {
   }
   if (args.psi_deg) {
     VRREG_THROW_UNLESS(std::isfinite(*args.psi_deg), "--psi-deg is not a finite number");
-    VRREG_THROW_UNLESS(s.chain.family() == ChainFamily::kLwr,
-                       "--psi-deg applies to 7-joint arms (lwr4); robot '" << s.chain.name()
-                                                                          << "' has none");
+    VRREG_THROW_UNLESS(
+        s.chain.family() == ChainFamily::kLwr,
+        "--psi-deg applies to 7-joint arms (lwr4); robot '" << s.chain.name() << "' has none");
     o.arm.psi_rad = units::deg_to_rad(*args.psi_deg);
   } else if (testbed && s.chain.family() == ChainFamily::kLwr) {
     o.arm.psi_rad = testbed->arm_angle_rad;
@@ -147,8 +148,9 @@ void run_plan(const PlanArgs& args) {
 void add_plan_command(CLI::App& app) {
   auto args = std::make_shared<PlanArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "plan", "Procedure 1 (paper section 6): where to measure fiducials around M part points, "
-              "with joints and a visiting order, as a plan CSV");
+      "plan",
+      "Procedure 1 (paper section 6): where to measure fiducials around M part points, "
+      "with joints and a visiting order, as a plan CSV");
   cmd->add_option("--parts", args->parts,
                   "CSV of part points: point,robot_x_mm,robot_y_mm,robot_z_mm (robot base frame), "
                   "or a measurement CSV whose target rows are the part points")
@@ -170,8 +172,9 @@ void add_plan_command(CLI::App& app) {
                   "paper's: 0.114 (Table 1, UR5), 0.077 for lwr4 (section 5.2)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--force", args->force, "write the plan even when d_min <= 2.5 sigma_noise");
-  cmd->add_option("--tool-mm", args->tool_mm, "TCP (tracked sphere) offset X Y Z in the flange "
-                                              "frame, mm")
+  cmd->add_option("--tool-mm", args->tool_mm,
+                  "TCP (tracked sphere) offset X Y Z in the flange "
+                  "frame, mm")
       ->expected(3);
   cmd->add_option("--rpy-deg", args->rpy_deg,
                   "fixed TCP orientation ROLL PITCH YAW in deg, R = Rz(yaw) Ry(pitch) Rx(roll)")

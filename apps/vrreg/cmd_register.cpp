@@ -5,6 +5,7 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "strategy_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/correction/rrbc.hpp"
@@ -25,6 +26,7 @@ struct RegisterArgs {
   bool robust = false;
   std::optional<double> sigma_rep_mm;
   InterpolationFlags interpolation;
+  StrategyFlags strategy;
   std::string output;
   bool json = false;
 };
@@ -42,13 +44,22 @@ void run_register(const RegisterArgs& args) {
   }
 }
 
-void run_register_unchecked(const RegisterArgs& args) {
-  const MeasurementSet set = io::read_measurement_csv(args.fiducials);
-  const std::vector<std::size_t> rows = select_rows(set, Role::kFiducial, args.config);
-  Points3 sensor = set.sensor_points(rows);
-  Points3 robot = set.robot_points(rows);
-
+// The fiducials that built the registration, and the model.
+struct Registered {
   RegistrationModel model;
+  RegistrationResult reg;
+  Points3 sensor;  ///< registered fiducials, sensor frame [m]
+  Points3 robot;   ///< and robot frame [m]
+  std::vector<std::string> rejected;
+};
+
+// Registers the fiducial rows (of one configuration with --config): no strategy, 1 or 2.
+Registered register_rows(const MeasurementSet& set, const RegisterArgs& args) {
+  const std::vector<std::size_t> rows = select_rows(set, Role::kFiducial, args.config);
+  Registered out;
+  out.sensor = set.sensor_points(rows);
+  out.robot = set.robot_points(rows);
+  RegistrationModel& model = out.model;
   model.source = args.fiducials;
   model.config = args.config;
   model.interpolation = args.interpolation.apply(model.interpolation);
@@ -56,33 +67,63 @@ void run_register_unchecked(const RegisterArgs& args) {
   RegistrationOptions reg_options;
   reg_options.estimate_scale = args.scale;
   std::vector<std::size_t> kept = rows;
-  std::vector<std::string> rejected;
-  RegistrationResult reg;
   if (args.robust) {
     RobustRegistrationOptions robust_options;
     robust_options.registration = reg_options;
-    const RobustRegistrationResult r = register_rigid_robust(sensor, robot, robust_options);
+    const RobustRegistrationResult r = register_rigid_robust(out.sensor, out.robot, robust_options);
     VRREG_THROW_UNLESS(r.converged, args.fiducials << ": robust registration failed: " << r.message);
     kept.clear();
     std::size_t next_rejected = 0;
     for (std::size_t k = 0; k < rows.size(); ++k) {
       if (next_rejected < r.rejected.size() &&
           r.rejected[next_rejected] == static_cast<Eigen::Index>(k)) {
-        rejected.push_back(set.locations[rows[k]].point);
+        out.rejected.push_back(set.locations[rows[k]].point);
         ++next_rejected;
       } else {
         kept.push_back(rows[k]);
       }
     }
-    sensor = set.sensor_points(kept);
-    robot = set.robot_points(kept);
+    out.sensor = set.sensor_points(kept);
+    out.robot = set.robot_points(kept);
   }
-  reg = register_rigid(sensor, robot, reg_options);
-  model.T_robot_sensor = reg.T_robot_sensor;
-  model.fre_m = reg.fre_m;
+  out.reg = register_rigid(out.sensor, out.robot, reg_options);
+  model.T_robot_sensor = out.reg.T_robot_sensor;
+  model.fre_m = out.reg.fre_m;
   for (std::size_t i : kept) model.fiducials.push_back(set.locations[i]);
-  model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, sensor, robot);
-  const RigidBodyStatistics rb = rigid_body_statistics(sensor, robot);
+  model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, out.sensor, out.robot);
+  return out;
+}
+
+// Strategy 3: one registration from the volume corners, corrections for every configuration.
+Registered register_volume(const MeasurementSet& set, const RegisterArgs& args) {
+  RegistrationOptions reg_options;
+  reg_options.estimate_scale = args.scale;
+  Strategy3Model s3 = build_strategy3_model(
+      set, args.strategy.seed.value_or(1), joint_norm(args.strategy, nullptr), reg_options,
+      args.interpolation.apply(InterpolationSettings{}));
+  s3.model.source = args.fiducials;
+  return {std::move(s3.model), s3.registration, s3.registered_sensor_m, s3.registered_robot_m, {}};
+}
+
+void run_register_unchecked(const RegisterArgs& args) {
+  const int strategy = register_strategy(args.strategy, args.config, args.robust);
+  MeasurementSet set = io::read_measurement_csv(args.fiducials);
+  std::optional<planning::Strategy2Summary> relabelled;
+  if (strategy == 2) {
+    planning::Strategy2Result r = relabel_file(set, joint_norm(args.strategy, nullptr));
+    set = std::move(r.set);
+    relabelled = r.summary;
+  }
+  Registered registered = strategy == 3 ? register_volume(set, args) : register_rows(set, args);
+  RegistrationModel& model = registered.model;
+  const RegistrationResult& reg = registered.reg;
+  const std::vector<std::string>& rejected = registered.rejected;
+  const auto n_registered = static_cast<std::size_t>(registered.sensor.cols());
+  if (strategy == 1 || strategy == 2) {
+    model.procedure2.strategy = strategy;
+    model.procedure2.joint_norm = kinematics::to_string(joint_norm(args.strategy, nullptr));
+  }
+  const RigidBodyStatistics rb = rigid_body_statistics(registered.sensor, registered.robot);
   model.sigma_l_m = rb.sigma_l_m;
 
   std::vector<Location> kept_locations = model.fiducials;
@@ -101,7 +142,7 @@ void run_register_unchecked(const RegisterArgs& args) {
     nlohmann::json j;
     j["source"] = args.fiducials;
     j["config"] = args.config ? nlohmann::json(*args.config) : nlohmann::json(nullptr);
-    j["n_fiducials"] = kept.size();
+    j["n_fiducials"] = n_registered;
     j["rotation"] = {{r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)},
                      {r(2, 0), r(2, 1), r(2, 2)}};
     j["translation_mm"] = json_mm3(model.T_robot_sensor.translation_m);
@@ -117,11 +158,13 @@ void run_register_unchecked(const RegisterArgs& args) {
     if (rho_value) j["rho"] = *rho_value;
     j["rejected"] = rejected;
     j["model"] = args.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(args.output);
+    add_strategy_json(j, model, relabelled);
     print_json(j);
     return;
   }
-  std::printf("registered %zu fiducials from %s%s\n", kept.size(), args.fiducials.c_str(),
+  std::printf("registered %zu fiducials from %s%s\n", n_registered, args.fiducials.c_str(),
               args.config ? (" (config " + std::to_string(*args.config) + ")").c_str() : "");
+  print_strategy(model, relabelled);
   std::printf("  rotation R (sensor -> robot)  [% .9f % .9f % .9f]\n", r(0, 0), r(0, 1), r(0, 2));
   std::printf("                                [% .9f % .9f % .9f]\n", r(1, 0), r(1, 1), r(1, 2));
   std::printf("                                [% .9f % .9f % .9f]\n", r(2, 0), r(2, 1), r(2, 2));
@@ -169,6 +212,7 @@ void add_register_command(CLI::App& app) {
                   "robot repeatability in mm, for sigma_noise and rho (UR5 0.1, LWR 4+ 0.05)")
       ->check(CLI::NonNegativeNumber);
   args->interpolation.add_to(*cmd);
+  args->strategy.add_to(*cmd, true);
   cmd->add_option("-o,--output", args->output, "write the model (JSON) here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_register(*args); });

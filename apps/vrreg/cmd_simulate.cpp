@@ -45,9 +45,10 @@ void run_simulate(const SimulateArgs& args) {
   io::write_simulated_dataset_csv(args.output, data);
   std::size_t targets = 0;
   for (const auto& location : data.locations) targets += location.role == Role::kTarget ? 1 : 0;
-  std::printf("simulated %s %s with seed %llu%s\n", testbed.name.c_str(),
-              simulation::to_string(dataset), static_cast<unsigned long long>(args.seed),
-              args.errors.empty() ? " (default errors)" : (" (errors from " + args.errors + ")").c_str());
+  std::printf(
+      "simulated %s %s with seed %llu%s\n", testbed.name.c_str(), simulation::to_string(dataset),
+      static_cast<unsigned long long>(args.seed),
+      args.errors.empty() ? " (default errors)" : (" (errors from " + args.errors + ")").c_str());
   std::printf("  %zu locations (%zu fiducials, %zu targets), %zu visits, %zu readings\n",
               data.locations.size(), data.locations.size() - targets, targets, data.visits.size(),
               data.readings.size());
@@ -57,8 +58,9 @@ void run_simulate(const SimulateArgs& args) {
 void add_simulate_command(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "simulate", "acquire one of the paper's datasets on a simulated test bed (ur5: A1, A2, B; "
-                  "lwr4: grid) and write it as a measurement CSV");
+      "simulate",
+      "acquire one of the paper's datasets on a simulated test bed (ur5: A1, A2, B; "
+      "lwr4: grid) and write it as a measurement CSV");
   cmd->add_option("TESTBED", args->testbed, "ur5 or lwr4")->required();
   cmd->add_option("DATASET", args->dataset, "ur5: A1, A2 or B; lwr4: grid");
   cmd->add_option("--seed", args->seed,

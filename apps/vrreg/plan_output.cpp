@@ -86,13 +86,13 @@ std::vector<std::string> plan_comments(const PlanArgs& args, const PlanSetup& se
       "halfwidth_mm: " + mm(c.requested_halfwidth_m) + " requested, " + mm(c.halfwidth_m) +
           " covered (part point at the centre of a grid cell)",
       "spacing_mm: " + mm(c.spacing_m),
-      "nodes_per_axis: " + std::to_string(c.nodes_per_axis) + " (" +
-          std::to_string(c.n_nodes()) + " fiducials per part point)",
+      "nodes_per_axis: " + std::to_string(c.nodes_per_axis) + " (" + std::to_string(c.n_nodes()) +
+          " fiducials per part point)",
       "d_min_mm: " + mm(c.d_min_m()) + " (sqrt(3)/2 A, target to its 8 nearest fiducials)",
       "d_max_mm: " + mm(c.d_max_m()),
       "sigma_noise_mm: " + mm(o.sigma_noise_m) + " (" + sigma_source(args) + ")",
-      "eq9: d_min > 2.5 sigma_noise = " + mm(plan.dmin.threshold_m) + " mm: " +
-          (plan.dmin.ok ? "ok" : "FAILED, forced"),
+      "eq9: d_min > 2.5 sigma_noise = " + mm(plan.dmin.threshold_m) +
+          " mm: " + (plan.dmin.ok ? "ok" : "FAILED, forced"),
       std::string("joints: IK solution nearest the part point's joints, norm ") +
           kinematics::to_string(o.arm.norm) +
           (o.arm.home_q_rad ? "; part points nearest home_deg " + degrees_list(*o.arm.home_q_rad)
@@ -105,10 +105,11 @@ std::vector<std::string> plan_comments(const PlanArgs& args, const PlanSetup& se
                 "; serpentine inside each cube (consecutive fiducials one grid step apart), the "
                 "target between two corners of its cell");
   out.push_back("travel_mm: inside cubes " + mm(plan.within_cubes_m, 1) + ", between cubes " +
-                mm(plan.between_cubes_m, 1) + " (input order: " +
-                mm(plan.naive_between_cubes_m, 1) + ")");
-  out.push_back("rows: visiting order; add sensor_x_mm,sensor_y_mm,sensor_z_mm (and drop part) "
-                "to make a measurement CSV");
+                mm(plan.between_cubes_m, 1) +
+                " (input order: " + mm(plan.naive_between_cubes_m, 1) + ")");
+  out.push_back(
+      "rows: visiting order; add sensor_x_mm,sensor_y_mm,sensor_z_mm (and drop part) "
+      "to make a measurement CSV");
   return out;
 }
 
@@ -157,7 +158,8 @@ nlohmann::json plan_json(const PlanArgs& args, const PlanSetup& setup,
   j["parts"] = parts;
   nlohmann::json order = nlohmann::json::array();
   std::vector<std::string> names(plan.parts.size());
-  for (const planning::PartPlan& p : plan.parts) names[static_cast<std::size_t>(p.visit_rank)] = p.name;
+  for (const planning::PartPlan& p : plan.parts)
+    names[static_cast<std::size_t>(p.visit_rank)] = p.name;
   for (const std::string& n : names) order.push_back(n);
   j["visit_order"] = order;
   j["within_cubes_mm"] = units::m_to_mm(plan.within_cubes_m);
@@ -182,22 +184,28 @@ void print_plan_summary(const PlanArgs& args, const PlanSetup& setup,
   std::printf("plan for %zu part points from %s on %s (lengths in mm)\n", plan.parts.size(),
               args.parts.c_str(), setup.chain.name().c_str());
   std::printf("  tracked point         %s\n", pose_frame_description(setup.chain).c_str());
-  std::printf("  tool orientation      rpy %s deg (fixed, robot base frame)", rpy_deg_text(o.arm.R_base_tcp, 1).c_str());
-  if (setup.chain.family() == kinematics::ChainFamily::kLwr) std::printf(", psi %s deg", psi_text(setup).c_str());
+  std::printf("  tool orientation      rpy %s deg (fixed, robot base frame)",
+              rpy_deg_text(o.arm.R_base_tcp, 1).c_str());
+  if (setup.chain.family() == kinematics::ChainFamily::kLwr)
+    std::printf(", psi %s deg", psi_text(setup).c_str());
   std::printf("\n");
-  std::printf("  placement tolerance   S = %s mm asked, %s mm covered (%d cells of A per axis: the "
-              "part point at a cell centre)\n",
-              mm(c.requested_halfwidth_m).c_str(), mm(c.halfwidth_m).c_str(), n - 1);
+  std::printf(
+      "  placement tolerance   S = %s mm asked, %s mm covered (%d cells of A per axis: the "
+      "part point at a cell centre)\n",
+      mm(c.requested_halfwidth_m).c_str(), mm(c.halfwidth_m).c_str(), n - 1);
   std::printf("  grid spacing          A = %s mm: %d x %d x %d = %lld fiducials per part point\n",
               mm(c.spacing_m).c_str(), n, n, n, c.n_nodes());
   std::printf("  target-fiducial d     d_min = %s mm (8 nearest, sqrt(3)/2 A), d_max = %s mm\n",
               mm(c.d_min_m()).c_str(), mm(c.d_max_m()).c_str());
-  std::printf("  Eq. 9                 d_min %s 2.5 sigma_noise = %s mm: %s (sigma_noise = %s mm, %s)\n",
-              plan.dmin.ok ? ">" : "<=", mm(plan.dmin.threshold_m).c_str(),
-              plan.dmin.ok ? "ok" : "FAILED (forced)", mm(o.sigma_noise_m).c_str(),
-              sigma_source(args).c_str());
-  std::printf("  joints                each fiducial: the IK solution nearest its part point's "
-              "joints (%s)\n", o.arm.norm == kinematics::JointNorm::kL2 ? "L2" : "Linf");
+  std::printf(
+      "  Eq. 9                 d_min %s 2.5 sigma_noise = %s mm: %s (sigma_noise = %s mm, %s)\n",
+      plan.dmin.ok ? ">" : "<=", mm(plan.dmin.threshold_m).c_str(),
+      plan.dmin.ok ? "ok" : "FAILED (forced)", mm(o.sigma_noise_m).c_str(),
+      sigma_source(args).c_str());
+  std::printf(
+      "  joints                each fiducial: the IK solution nearest its part point's "
+      "joints (%s)\n",
+      o.arm.norm == kinematics::JointNorm::kL2 ? "L2" : "Linf");
   std::printf("  %-12s %10s %10s %10s  %-40s %9s %12s %11s %5s\n", "part", "x", "y", "z",
               "configuration (index label)", "fiducials", "other config", "max dq deg", "visit");
   for (const planning::PartPlan& p : plan.parts) {
@@ -211,15 +219,17 @@ void print_plan_summary(const PlanArgs& args, const PlanSetup& setup,
               visit_order(plan).c_str(), plan.locations.size(),
               static_cast<long long>(plan.parts.size()) * c.n_nodes(), plan.parts.size(),
               plan.parts.size() == 1 ? "" : "s");
-  std::printf("  travel                %s mm inside cubes, %s mm between cubes (input order: %s mm)\n",
-              mm(plan.within_cubes_m, 1).c_str(), mm(plan.between_cubes_m, 1).c_str(),
-              mm(plan.naive_between_cubes_m, 1).c_str());
+  std::printf(
+      "  travel                %s mm inside cubes, %s mm between cubes (input order: %s mm)\n",
+      mm(plan.within_cubes_m, 1).c_str(), mm(plan.between_cubes_m, 1).c_str(),
+      mm(plan.naive_between_cubes_m, 1).c_str());
   for (const auto& [a, b] : plan.overlapping) {
     std::printf("  note: the cubes of %s and %s overlap or touch\n",
                 plan.parts[static_cast<std::size_t>(a)].name.c_str(),
                 plan.parts[static_cast<std::size_t>(b)].name.c_str());
   }
-  for (const std::string& note : setup.notes) std::printf("  default               %s\n", note.c_str());
+  for (const std::string& note : setup.notes)
+    std::printf("  default               %s\n", note.c_str());
   if (args.output.empty()) {
     std::printf("  no plan written (give -o FILE)\n");
   } else {

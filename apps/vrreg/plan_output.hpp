@@ -1,10 +1,9 @@
 #pragma once
 // `vrreg plan` output: the plan CSV rows and comment header, the summary and its JSON form.
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "vrreg/io/plan_csv.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"

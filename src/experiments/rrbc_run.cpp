@@ -32,8 +32,8 @@ RrbcRunFigures run_rrbc(const MeasurementSet& set, const std::vector<std::size_t
   if (options.rigid_body_statistics) {
     f.sigma_l_m = rigid_body_statistics(fid_sensor, fid_robot).sigma_l_m;
   }
-  f.sigma_opt_m = options.sigma_opt_m ? *options.sigma_opt_m
-                                      : sigma_opt_m(model.fiducials).value_or(0.0);
+  f.sigma_opt_m =
+      options.sigma_opt_m ? *options.sigma_opt_m : sigma_opt_m(model.fiducials).value_or(0.0);
   f.sigma_noise_m = sigma_noise_m(f.sigma_opt_m, options.sigma_rep_m);
   if (f.sigma_noise_m > 0.0) f.rho = rho(f.sigma_l_m, f.sigma_noise_m);
 

@@ -14,9 +14,9 @@ std::vector<std::vector<int>> strategy2_order(const std::vector<Eigen::MatrixXd>
     VRREG_THROW_UNLESS(q.cols() > 0, "Strategy 2: point " << p << " has no configuration");
     int nearest = 0;
     if (p > 0) {
-      VRREG_THROW_UNLESS(q.rows() == reference.size(),
-                         "Strategy 2: point " << p << " has " << q.rows() << " joints, not "
-                                              << reference.size());
+      VRREG_THROW_UNLESS(q.rows() == reference.size(), "Strategy 2: point "
+                                                           << p << " has " << q.rows()
+                                                           << " joints, not " << reference.size());
       nearest = *kinematics::nearest_configuration(q, reference, norm);
     }
     reference = q.col(nearest);

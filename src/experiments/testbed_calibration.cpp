@@ -1,6 +1,7 @@
 #include "vrreg/experiments/testbed_calibration.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/correction/rrbc.hpp"
@@ -43,8 +44,8 @@ RrbcRunFigures run_grid_dataset(const simulation::Testbed& testbed, Dataset data
 // the eight corners of each of its ten cubes in turn (weights 1/8).
 void run_b(const simulation::Testbed& testbed, std::uint64_t seed,
            const std::optional<simulation::TestbedErrorModel>& errors, Ur5SeedFigures& out) {
-  const simulation::SimulatedDataset data = simulation::simulate_dataset(testbed, Dataset::kB,
-                                                                         {seed, errors});
+  const simulation::SimulatedDataset data =
+      simulation::simulate_dataset(testbed, Dataset::kB, {seed, errors});
   const MeasurementSet set = to_measurement_set(data);
   const std::vector<std::size_t> fid = set.select(Role::kFiducial);
   const std::vector<std::size_t> tgt = set.select(Role::kTarget);
@@ -63,7 +64,8 @@ void run_b(const simulation::Testbed& testbed, std::uint64_t seed,
     const simulation::PlannedLocation& p = data.locations[fid[j]];
     const int slot = target_slot[static_cast<std::size_t>(p.owner)];
     const int cube = static_cast<int>(std::lround((0.050 - p.cube_edge_m) / 0.005));
-    VRREG_THROW_UNLESS(slot >= 0 && cube >= 0 && cube < kCubes, "dataset B: bad fiducial " << p.point);
+    VRREG_THROW_UNLESS(slot >= 0 && cube >= 0 && cube < kCubes,
+                       "dataset B: bad fiducial " << p.point);
     const auto k = static_cast<std::size_t>(slot * kCubes + cube);
     sum[k] += eps.col(static_cast<Eigen::Index>(j));
     ++count[k];
@@ -96,7 +98,8 @@ MeasurementSet relabel_strategy2(const MeasurementSet& set, std::size_t per_poin
     Eigen::MatrixXd q(set.n_joints, static_cast<Eigen::Index>(per_point));
     for (std::size_t m = 0; m < per_point; ++m) {
       const std::vector<double>& qm = set.locations[first + m].q_rad;
-      for (int i = 0; i < set.n_joints; ++i) q(i, static_cast<Eigen::Index>(m)) = qm[static_cast<std::size_t>(i)];
+      for (int i = 0; i < set.n_joints; ++i)
+        q(i, static_cast<Eigen::Index>(m)) = qm[static_cast<std::size_t>(i)];
     }
     configurations.push_back(std::move(q));
   }
@@ -112,7 +115,8 @@ MeasurementSet relabel_strategy2(const MeasurementSet& set, std::size_t per_poin
   return out;
 }
 
-std::array<RrbcRunFigures, 4> run_per_label(const MeasurementSet& set, const RrbcRunOptions& options) {
+std::array<RrbcRunFigures, 4> run_per_label(const MeasurementSet& set,
+                                            const RrbcRunOptions& options) {
   std::array<RrbcRunFigures, 4> out;
   for (int m = 1; m <= 4; ++m) {
     out[static_cast<std::size_t>(m - 1)] =
@@ -159,12 +163,14 @@ CalibrationReport run_testbed_calibration(const CalibrationOptions& options) {
   const simulation::Testbed lwr4 = simulation::lwr4_testbed();
   for (std::uint64_t seed : options.seeds) {
     double sigma_opt = lwr4.default_errors.tracker.noise_sigma_m.norm() / std::sqrt(3.0);
-    if (options.lwr4_errors) sigma_opt = options.lwr4_errors->tracker.noise_sigma_m.norm() / std::sqrt(3.0);
+    if (options.lwr4_errors)
+      sigma_opt = options.lwr4_errors->tracker.noise_sigma_m.norm() / std::sqrt(3.0);
     if (options.ur5) {
       report.ur5.push_back(calibrate_ur5(ur5, seed, options.ur5_errors));
       sigma_opt = report.ur5.back().a1.sigma_opt_m;
     }
-    if (options.lwr4) report.lwr4.push_back(calibrate_lwr4(lwr4, seed, options.lwr4_errors, sigma_opt));
+    if (options.lwr4)
+      report.lwr4.push_back(calibrate_lwr4(lwr4, seed, options.lwr4_errors, sigma_opt));
   }
   return report;
 }

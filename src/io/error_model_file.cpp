@@ -4,10 +4,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
-
-#include <nlohmann/json.hpp>
 
 #include "robot_file_document.hpp"
 #include "vrreg/core/units.hpp"
@@ -19,8 +18,8 @@ namespace {
 
 using nlohmann::json;
 using units::deg_to_rad;
-using units::mm_to_m;
 using units::m_to_mm;
+using units::mm_to_m;
 using units::rad_to_deg;
 
 constexpr const char* kFormat = "vrreg-simulation-errors";
@@ -78,8 +77,8 @@ class Reader {
     const json& value = parent.at(key);
     const std::string where = join(path, key);
     if (!value.is_array() || (value.size() != n && !value.empty())) {
-      fail(where, "expected a list of " + std::to_string(n) + " numbers (one per joint) or [], got " +
-                      value.dump());
+      fail(where, "expected a list of " + std::to_string(n) +
+                      " numbers (one per joint) or [], got " + value.dump());
     }
     out.clear();
     for (std::size_t i = 0; i < value.size(); ++i) {
@@ -134,8 +133,8 @@ void read_robot(const Reader& reader, const json& root, std::size_t n_joints,
   reader.number(*robot, "robot", "link_length_sigma_mm", mm, r.link_length_sigma_m);
   reader.number(*robot, "robot", "link_offset_sigma_mm", mm, r.link_offset_sigma_m);
   reader.number(*robot, "robot", "twist_sigma_deg", deg, r.twist_sigma_rad);
-  reader.numbers(*robot, "robot", "transmission_amplitude_arcmin", deg / kArcminPerDegree,
-                 n_joints, r.transmission_amplitude_rad);
+  reader.numbers(*robot, "robot", "transmission_amplitude_arcmin", deg / kArcminPerDegree, n_joints,
+                 r.transmission_amplitude_rad);
   reader.numbers(*robot, "robot", "transmission_period_deg", deg, n_joints,
                  r.transmission_period_rad);
   reader.number(*robot, "robot", "repeatability_sigma_mm", mm, r.repeatability_sigma_m);
@@ -147,10 +146,9 @@ void read_robot(const Reader& reader, const json& root, std::size_t n_joints,
 }
 
 void read_tracker(const Reader& reader, const json& root, simulation::TrackerModel& t) {
-  const json* tracker =
-      reader.object(root, "", "tracker",
-                    {"distance_m", "azimuth_deg", "elevation_deg", "noise_sigma_mm",
-                     "readings_per_location"});
+  const json* tracker = reader.object(
+      root, "", "tracker",
+      {"distance_m", "azimuth_deg", "elevation_deg", "noise_sigma_mm", "readings_per_location"});
   if (tracker == nullptr) return;
   reader.number(*tracker, "tracker", "distance_m", 1.0, t.distance_m);
   reader.number(*tracker, "tracker", "azimuth_deg", deg_to_rad(1.0), t.azimuth_rad);
@@ -218,12 +216,12 @@ simulation::TestbedErrorModel parse_error_model(const std::string& text, const s
     }
   }
   if (root.contains("format") && root.at("format") != kFormat) {
-    reader.fail("format", std::string("expected \"") + kFormat + "\", got " +
-                              root.at("format").dump());
+    reader.fail("format",
+                std::string("expected \"") + kFormat + "\", got " + root.at("format").dump());
   }
   if (root.contains("testbed") && root.at("testbed") != testbed.name) {
-    reader.fail("testbed", "this file is for test bed " + root.at("testbed").dump() +
-                               ", not " + testbed.name);
+    reader.fail("testbed",
+                "this file is for test bed " + root.at("testbed").dump() + ", not " + testbed.name);
   }
   simulation::TestbedErrorModel model = testbed.default_errors;
   const auto n_joints = static_cast<std::size_t>(testbed.nominal.n_joints());

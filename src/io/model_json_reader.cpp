@@ -113,6 +113,38 @@ Location read_fiducial(const json& item, const std::string& path, const detail::
   return loc;
 }
 
+// Procedure 2 settings (paper section 4.4); absent in models built without a strategy.
+ConfigurationStrategy read_procedure2(const json& doc, const detail::JsonFields& f,
+                                      std::size_t n_fiducials) {
+  ConfigurationStrategy p;
+  if (!doc.contains("procedure2")) return p;
+  const json& item = f.member(doc, "", "procedure2");
+  f.require_object(item, "procedure2");
+  p.strategy = f.integer(item, "procedure2", "strategy");
+  if (p.strategy < 0 || p.strategy > 3) f.fail("procedure2.strategy", "expected 0, 1, 2 or 3");
+  p.joint_norm = f.string(item, "procedure2", "joint_norm");
+  if (p.joint_norm != "l2" && p.joint_norm != "linf") {
+    f.fail("procedure2.joint_norm", "expected \"l2\" or \"linf\"");
+  }
+  if (item.contains("seed")) {
+    const json& seed = item.at("seed");
+    if (!seed.is_number_unsigned()) f.fail("procedure2.seed", "expected an integer >= 0");
+    p.seed = seed.get<std::uint64_t>();
+  }
+  if (item.contains("registration_fiducials")) {
+    const json& list = item.at("registration_fiducials");
+    if (!list.is_array()) f.fail("procedure2.registration_fiducials", "expected an array");
+    for (const json& j : list) {
+      if (!j.is_number_unsigned() || j.get<std::uint64_t>() >= n_fiducials) {
+        f.fail("procedure2.registration_fiducials",
+               "expected fiducial indices below " + std::to_string(n_fiducials));
+      }
+      p.registration_fiducials.push_back(static_cast<std::size_t>(j.get<std::uint64_t>()));
+    }
+  }
+  return p;
+}
+
 }  // namespace
 
 RegistrationModel parse_model_json(const std::string& text, const std::string& source) {
@@ -155,6 +187,7 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
         read_fiducial(fiducials[j], "fiducials[" + std::to_string(j) + "]", f, correction_m));
     model.corrections_sensor_m.col(static_cast<Eigen::Index>(j)) = correction_m;
   }
+  model.procedure2 = read_procedure2(doc, f, model.fiducials.size());
   return model;
 }
 

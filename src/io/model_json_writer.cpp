@@ -50,6 +50,23 @@ json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m) {
   return out;
 }
 
+// Procedure 2 (paper section 4.4): written only for models built with a strategy.
+json procedure2_json(const RegistrationModel& model) {
+  const ConfigurationStrategy& p = model.procedure2;
+  json out = json::object();
+  out["strategy"] = p.strategy;
+  out["joint_norm"] = p.joint_norm;
+  if (p.seed) out["seed"] = *p.seed;
+  if (!p.registration_fiducials.empty()) {
+    for (const std::size_t j : p.registration_fiducials) {
+      VRREG_THROW_UNLESS(j < model.fiducials.size(),
+                         "model: registration fiducial " << j << " of " << model.fiducials.size());
+    }
+    out["registration_fiducials"] = p.registration_fiducials;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string format_model_json(const RegistrationModel& model) {
@@ -74,6 +91,7 @@ std::string format_model_json(const RegistrationModel& model) {
   out["fre_mm"] = finite(units::m_to_mm(model.fre_m), "fre_mm");
   out["sigma_l_mm"] = finite(units::m_to_mm(model.sigma_l_m), "sigma_l_mm");
   out["config"] = optional_int(model.config);
+  if (model.procedure2.strategy != 0) out["procedure2"] = procedure2_json(model);
   out["source"] = model.source;
   out["interpolation"] = {
       {"method", to_string(model.interpolation.method)},

@@ -47,9 +47,9 @@ PlanRow parse_row(const std::vector<std::string_view>& fields, const detail::Poi
   if (cols.config != detail::PointColumns::kAbsent) {
     row.config = detail::parse_int(field(fields, cols.config));
     if (!row.config) {
-      throw FileError(source, line,
-                      "config must be an integer, got '" +
-                          detail::printable(field(fields, cols.config)) + "'");
+      throw FileError(
+          source, line,
+          "config must be an integer, got '" + detail::printable(field(fields, cols.config)) + "'");
     }
   }
   for (std::size_t k = 0; k < cols.joints.size(); ++k) {
@@ -91,8 +91,8 @@ PlanFile parse_plan_csv(std::istream& in, const std::string& source_name) {
       header_line = at;
       columns = detail::parse_point_columns(fields, source_name, at, kRules);
       if (columns->role == detail::PointColumns::kAbsent) {
-        throw FileError(source_name, at, "header: missing column 'role' (" +
-                                             std::string(kRules.allowed) + ")");
+        throw FileError(source_name, at,
+                        "header: missing column 'role' (" + std::string(kRules.allowed) + ")");
       }
       continue;
     }

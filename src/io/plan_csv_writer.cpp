@@ -41,9 +41,8 @@ std::string format_plan_csv(const std::vector<PlanRow>& rows,
     std::size_t start = 0;
     for (;;) {
       const std::size_t newline = comment.find('\n', start);
-      const std::string line = comment.substr(start, newline == std::string::npos
-                                                         ? std::string::npos
-                                                         : newline - start);
+      const std::string line =
+          comment.substr(start, newline == std::string::npos ? std::string::npos : newline - start);
       const auto problem = detail::find_non_text(line);
       VRREG_THROW_UNLESS(!problem, "plan comment line: " << *problem);
       out += line.empty() ? "#\n" : "# " + line + "\n";

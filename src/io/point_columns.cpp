@@ -99,7 +99,8 @@ PointColumns parse_point_columns(const std::vector<std::string_view>& fields,
   }
   cols.length_in_mm = length_unit != "m";
   cols.joints_in_degrees = angle_unit == "deg";
-  if (cols.point == PointColumns::kAbsent) fail("missing column 'point' (" + std::string(rules.allowed) + ")");
+  if (cols.point == PointColumns::kAbsent)
+    fail("missing column 'point' (" + std::string(rules.allowed) + ")");
   for (int axis = 0; axis < 3; ++axis) {
     if (cols.robot[static_cast<std::size_t>(axis)] == PointColumns::kAbsent) {
       fail("missing column 'robot_" + std::string(1, static_cast<char>('x' + axis)) + "_" +
@@ -136,16 +137,16 @@ void check_field_count(const std::vector<std::string_view>& fields, const PointC
                        const std::string& source, std::size_t line) {
   if (fields.size() != columns.names.size()) {
     throw FileError(source, line,
-                    "expected " + std::to_string(columns.names.size()) + " fields (as the header), got " +
-                        std::to_string(fields.size()));
+                    "expected " + std::to_string(columns.names.size()) +
+                        " fields (as the header), got " + std::to_string(fields.size()));
   }
 }
 
-std::string parse_point_label(std::string_view field, const std::string& source,
-                              std::size_t line) {
+std::string parse_point_label(std::string_view field, const std::string& source, std::size_t line) {
   if (field.empty()) throw FileError(source, line, "empty point label");
   if (field.front() == '"') {
-    throw FileError(source, line, "quoted field " + printable(field) + " (quoting is not supported)");
+    throw FileError(source, line,
+                    "quoted field " + printable(field) + " (quoting is not supported)");
   }
   return std::string(field);
 }

@@ -50,8 +50,7 @@ void check_field_count(const std::vector<std::string_view>& fields, const PointC
                        const std::string& source, std::size_t line);
 
 /// A point label from `field`: not empty, not quoted; throws FileError otherwise.
-std::string parse_point_label(std::string_view field, const std::string& source,
-                              std::size_t line);
+std::string parse_point_label(std::string_view field, const std::string& source, std::size_t line);
 
 /// True when every field is empty (a spreadsheet's blank row).
 bool all_fields_empty(const std::vector<std::string_view>& fields);

@@ -40,17 +40,17 @@ void describe_errors(const simulation::TestbedErrorModel& errors, std::vector<st
                 join(r.transmission_period_rad, rad_to_deg(1.0), 6));
   out.push_back("repeatability sigma " + g(m_to_mm(r.repeatability_sigma_m)) +
                 " mm per axis, drawn once per visit; compliance under gravity " +
-                (r.compliance ? "on: link_mass_kg " + join(r.link_mass_kg, 1.0, 6) +
-                                    ", stiffness_nm_per_rad " +
-                                    join(r.joint_stiffness_nm_per_rad, 1.0, 6) + ", payload_kg " +
-                                    g(r.payload_kg)
-                              : std::string("off")));
+                (r.compliance
+                     ? "on: link_mass_kg " + join(r.link_mass_kg, 1.0, 6) +
+                           ", stiffness_nm_per_rad " + join(r.joint_stiffness_nm_per_rad, 1.0, 6) +
+                           ", payload_kg " + g(r.payload_kg)
+                     : std::string("off")));
   out.push_back("tracker: " + g(t.distance_m) + " m from the volume centre, azimuth " +
                 g(rad_to_deg(t.azimuth_rad)) + " deg, elevation " + g(rad_to_deg(t.elevation_rad)) +
                 " deg; noise sigma per reading per sensor axis (x, y, z) [" +
                 g(m_to_mm(t.noise_sigma_m.x())) + ", " + g(m_to_mm(t.noise_sigma_m.y())) + ", " +
-                g(m_to_mm(t.noise_sigma_m.z())) + "] mm; K = " +
-                std::to_string(t.readings_per_location) + " readings per visit");
+                g(m_to_mm(t.noise_sigma_m.z())) +
+                "] mm; K = " + std::to_string(t.readings_per_location) + " readings per visit");
 }
 
 void describe_robot(const simulation::SimulatedDataset& data, std::vector<std::string>& out) {
@@ -59,8 +59,8 @@ void describe_robot(const simulation::SimulatedDataset& data, std::vector<std::s
     const kinematics::DhRow& d = data.robot.dh_delta[i];
     char line[200];
     std::snprintf(line, sizeof line,
-                  "  joint %zu: dtheta %+.5f deg, da %+.4f mm, dd %+.4f mm, dalpha %+.5f deg", i + 1,
-                  rad_to_deg(d.theta_offset_rad), m_to_mm(d.a_m), m_to_mm(d.d_m),
+                  "  joint %zu: dtheta %+.5f deg, da %+.4f mm, dd %+.4f mm, dalpha %+.5f deg",
+                  i + 1, rad_to_deg(d.theta_offset_rad), m_to_mm(d.a_m), m_to_mm(d.d_m),
                   rad_to_deg(d.alpha_rad));
     std::string text = line;
     if (i < data.robot.transmission_phase_rad.size()) {
@@ -103,17 +103,20 @@ std::vector<std::string> simulated_dataset_comments(const simulation::SimulatedD
   out.push_back(std::to_string(data.locations.size()) + " nominal locations (" +
                 std::to_string(data.locations.size() - targets) + " fiducials, " +
                 std::to_string(targets) + " targets), " + std::to_string(data.visits.size()) +
-                " visits, " + std::to_string(data.readings.size()) + " readings; rows in visiting order");
+                " visits, " + std::to_string(data.readings.size()) +
+                " readings; rows in visiting order");
   if (lwr) {
-    out.push_back("config = position (1..4) in the analytic IK's list, which ranks the four "
-                  "configurations by joint distance to the home posture (Strategy 1 order)");
+    out.push_back(
+        "config = position (1..4) in the analytic IK's list, which ranks the four "
+        "configurations by joint distance to the home posture (Strategy 1 order)");
   } else {
     out.push_back("UR controller: one IK solution per location, nearest the previous joints");
   }
   if (data.dataset == simulation::Dataset::kB) {
-    out.push_back("B labels: target = A1 grid label, fiducial = target label + _a<cube edge mm>_c<corner>"
-                  " (corner bits 1 = +x, 2 = +y, 4 = +z); 50 mm cube corners of neighbouring "
-                  "targets share nominal positions, each visited once per target");
+    out.push_back(
+        "B labels: target = A1 grid label, fiducial = target label + _a<cube edge mm>_c<corner>"
+        " (corner bits 1 = +x, 2 = +y, 4 = +z); 50 mm cube corners of neighbouring "
+        "targets share nominal positions, each visited once per target");
   }
   describe_errors(data.errors, out);
   describe_robot(data, out);

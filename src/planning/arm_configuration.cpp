@@ -37,7 +37,8 @@ JointChoice from_result(const IkResult& r, const kinematics::JointRef* reference
   const kinematics::IkSolution& s = r.solutions.front();
   choice.q_rad = s.q_rad;
   choice.config = s.config;
-  if (reference != nullptr) choice.distance_rad = kinematics::joint_distance(s.q_rad, *reference, norm);
+  if (reference != nullptr)
+    choice.distance_rad = kinematics::joint_distance(s.q_rad, *reference, norm);
   return choice;
 }
 

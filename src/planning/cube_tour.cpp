@@ -15,7 +15,7 @@ constexpr double kImprovement = 1e-12;  // [m]: smaller gains are rounding
 
 struct Problem {
   const ConstPoints3Ref& centres;
-  Points3 entry;             // distinct (entry, exit) pairs only
+  Points3 entry;  // distinct (entry, exit) pairs only
   Points3 exit;
   std::vector<int> variant;  // the first variant index with that pair
 };
@@ -62,8 +62,7 @@ double best_variants(const Problem& p, const std::vector<int>& order, std::vecto
       const Eigen::Vector3d entry = to + p.entry.col(static_cast<Eigen::Index>(v));
       double best = std::numeric_limits<double>::infinity();
       for (std::size_t u = 0; u < n_pairs; ++u) {
-        const double c =
-            cost[u] + (from + p.exit.col(static_cast<Eigen::Index>(u)) - entry).norm();
+        const double c = cost[u] + (from + p.exit.col(static_cast<Eigen::Index>(u)) - entry).norm();
         if (c < best) {
           best = c;
           back[k * n_pairs + v] = u;
@@ -73,8 +72,8 @@ double best_variants(const Problem& p, const std::vector<int>& order, std::vecto
     }
     cost.swap(next);
   }
-  std::size_t v = static_cast<std::size_t>(std::min_element(cost.begin(), cost.end()) -
-                                           cost.begin());
+  std::size_t v =
+      static_cast<std::size_t>(std::min_element(cost.begin(), cost.end()) - cost.begin());
   const double total = cost[v];
   variant.assign(m, 0);
   for (std::size_t k = m; k-- > 0;) {
@@ -161,9 +160,9 @@ double between_cube_travel_m(const ConstPoints3Ref& centres_m,
                              const ConstPoints3Ref& entry_offsets_m,
                              const ConstPoints3Ref& exit_offsets_m, const std::vector<int>& order,
                              const std::vector<int>& variant) {
-  VRREG_THROW_UNLESS(order.size() == variant.size(),
-                     "cube travel: " << order.size() << " cubes but " << variant.size()
-                                     << " variants");
+  VRREG_THROW_UNLESS(
+      order.size() == variant.size(),
+      "cube travel: " << order.size() << " cubes but " << variant.size() << " variants");
   VRREG_THROW_UNLESS(entry_offsets_m.cols() == exit_offsets_m.cols(),
                      "cube travel: entry and exit offsets differ in number");
   double total = 0.0;

@@ -15,24 +15,25 @@ double min_spacing_for_noise_m(double sigma_noise_m) {
 DminCheck check_dmin(double d_min_m, double sigma_noise_m, bool force) {
   VRREG_THROW_UNLESS(std::isfinite(d_min_m) && d_min_m > 0.0,
                      "d_min check: d_min must be finite and positive, got " << d_min_m << " m");
-  VRREG_THROW_UNLESS(std::isfinite(sigma_noise_m) && sigma_noise_m > 0.0,
-                     "d_min check: sigma_noise must be finite and positive, got " << sigma_noise_m
-                                                                                  << " m");
+  VRREG_THROW_UNLESS(
+      std::isfinite(sigma_noise_m) && sigma_noise_m > 0.0,
+      "d_min check: sigma_noise must be finite and positive, got " << sigma_noise_m << " m");
   DminCheck check;
   check.d_min_m = d_min_m;
   check.sigma_noise_m = sigma_noise_m;
   check.threshold_m = kDminNoiseFactor * sigma_noise_m;
   check.ok = d_min_m > check.threshold_m;
   check.forced = !check.ok && force;
-  VRREG_THROW_UNLESS(check.ok || force,
-                     std::fixed << std::setprecision(3) << "d_min = " << units::m_to_mm(d_min_m) << " mm is not above 2.5 * sigma_noise = "
-                                << units::m_to_mm(check.threshold_m) << " mm (sigma_noise = "
-                                << units::m_to_mm(sigma_noise_m)
-                                << " mm; paper Eq. 9): fiducials this close to the target see "
-                                   "mostly noise and RRBC is not expected to help; use a grid "
-                                   "spacing above "
-                                << units::m_to_mm(min_spacing_for_noise_m(sigma_noise_m))
-                                << " mm, or force the plan");
+  VRREG_THROW_UNLESS(
+      check.ok || force,
+      std::fixed << std::setprecision(3) << "d_min = " << units::m_to_mm(d_min_m)
+                 << " mm is not above 2.5 * sigma_noise = " << units::m_to_mm(check.threshold_m)
+                 << " mm (sigma_noise = " << units::m_to_mm(sigma_noise_m)
+                 << " mm; paper Eq. 9): fiducials this close to the target see "
+                    "mostly noise and RRBC is not expected to help; use a grid "
+                    "spacing above "
+                 << units::m_to_mm(min_spacing_for_noise_m(sigma_noise_m))
+                 << " mm, or force the plan");
   return check;
 }
 

@@ -24,19 +24,18 @@ double CubeGeometry::d_min_m() const { return std::sqrt(3.0) / 2.0 * spacing_m; 
 double CubeGeometry::d_max_m() const { return std::sqrt(3.0) * halfwidth_m; }
 
 CubeGeometry cube_geometry(double halfwidth_m, double spacing_m) {
-  VRREG_THROW_UNLESS(std::isfinite(halfwidth_m) && halfwidth_m > 0.0,
-                     "fiducial cube: half-width S must be finite and positive, got "
-                         << halfwidth_m << " m");
-  VRREG_THROW_UNLESS(std::isfinite(spacing_m) && spacing_m > 0.0,
-                     "fiducial cube: grid spacing A must be finite and positive, got "
-                         << spacing_m << " m");
+  VRREG_THROW_UNLESS(
+      std::isfinite(halfwidth_m) && halfwidth_m > 0.0,
+      "fiducial cube: half-width S must be finite and positive, got " << halfwidth_m << " m");
+  VRREG_THROW_UNLESS(
+      std::isfinite(spacing_m) && spacing_m > 0.0,
+      "fiducial cube: grid spacing A must be finite and positive, got " << spacing_m << " m");
   const double m = std::ceil(halfwidth_m / spacing_m - 0.5 - kRoundingTolerance);
   const double nodes = 2.0 * std::max(m, 0.0) + 2.0;
   VRREG_THROW_UNLESS(nodes <= kMaxNodesPerAxis,
-                     "fiducial cube: half-width S = " << halfwidth_m << " m with spacing A = "
-                                                      << spacing_m << " m needs " << nodes
-                                                      << " nodes per axis (at most "
-                                                      << kMaxNodesPerAxis << ")");
+                     "fiducial cube: half-width S = "
+                         << halfwidth_m << " m with spacing A = " << spacing_m << " m needs "
+                         << nodes << " nodes per axis (at most " << kMaxNodesPerAxis << ")");
   CubeGeometry cube;
   cube.spacing_m = spacing_m;
   cube.requested_halfwidth_m = halfwidth_m;

@@ -45,9 +45,9 @@ void check_labels(const std::vector<PartPoint>& parts, const CubeGeometry& cube)
       for (int iy = 0; iy < n; ++iy) {
         for (int ix = 0; ix < n; ++ix) {
           const std::string label = fiducial_label(p.name, {ix, iy, iz});
-          VRREG_THROW_UNLESS(labels.insert(label).second,
-                             "plan: fiducial label '" << label
-                                                      << "' is also the name of a part point");
+          VRREG_THROW_UNLESS(
+              labels.insert(label).second,
+              "plan: fiducial label '" << label << "' is also the name of a part point");
         }
       }
     }
@@ -78,9 +78,9 @@ CubeJoints solve_cube(const kinematics::SerialChain& chain, const PartPoint& par
     const JointChoice choice = nearest_joints(chain, nodes.col(c), at_part.q_rad, options.arm);
     if (!choice.ok()) {
       const auto k = static_cast<int>(c);
-      unreachable.push_back({fiducial_label(part.name, {k % n, (k / n) % n, k / (n * n)}),
-                             std::string(kinematics::to_string(choice.status)) + ": " +
-                                 choice.message});
+      unreachable.push_back(
+          {fiducial_label(part.name, {k % n, (k / n) % n, k / (n * n)}),
+           std::string(kinematics::to_string(choice.status)) + ": " + choice.message});
       continue;
     }
     joints[static_cast<std::size_t>(c)] = choice;
@@ -184,8 +184,8 @@ PlanResult make_plan(const kinematics::SerialChain& chain, const std::vector<Par
   std::vector<int> input_order(parts.size());
   for (std::size_t i = 0; i < parts.size(); ++i) input_order[i] = static_cast<int>(i);
   result.between_cubes_m = tour.between_cubes_m;
-  result.naive_between_cubes_m = between_cube_travel_m(
-      centres, entry, exit, input_order, std::vector<int>(parts.size(), 0));
+  result.naive_between_cubes_m =
+      between_cube_travel_m(centres, entry, exit, input_order, std::vector<int>(parts.size(), 0));
 
   result.locations.reserve(static_cast<std::size_t>(total));
   for (std::size_t k = 0; k < tour.order.size(); ++k) {

@@ -36,9 +36,9 @@ void plan_ur_visits(const Testbed& testbed, SimulatedDataset& data) {
     const PlannedLocation& location = data.locations[n];
     const kinematics::IkResult ik = kinematics::ur_inverse_kinematics_nearest(
         testbed.nominal, tcp_pose(testbed, location.robot_m), q_previous);
-    VRREG_THROW_UNLESS(ik.ok() && !ik.solutions.empty(),
-                       testbed.name << ": no IK solution for " << where(location) << ": "
-                                    << ik.message);
+    VRREG_THROW_UNLESS(ik.ok() && !ik.solutions.empty(), testbed.name << ": no IK solution for "
+                                                                      << where(location) << ": "
+                                                                      << ik.message);
     q_previous = ik.solutions.front().q_rad;
     data.visits.push_back({static_cast<int>(n), 0, q_previous, Eigen::Vector3d::Zero()});
   }

@@ -40,8 +40,7 @@ Eigen::Vector3d metres_of_mm(const Eigen::Vector3d& mm) {
 // Grid node position in mm, rounded to 1 um (exact for the grids and cubes used here).
 Eigen::Vector3d node_position_mm(const Testbed& testbed, const GridSpec& grid,
                                  const Eigen::Vector3i& node) {
-  const Eigen::Vector3d centre_index(0.5 * (grid.nx - 1), 0.5 * (grid.ny - 1),
-                                     0.5 * (grid.nz - 1));
+  const Eigen::Vector3d centre_index(0.5 * (grid.nx - 1), 0.5 * (grid.ny - 1), 0.5 * (grid.nz - 1));
   const Eigen::Vector3d centre_mm = (testbed.volume_centre_m * 1e6).array().round() / 1e3;
   const double step_mm = std::round(grid.step_m * 1e6) / 1e3;
   return centre_mm + step_mm * (node.cast<double>() - centre_index);

@@ -10,9 +10,9 @@ kinematics::JointVector gravity_torques_nm(const kinematics::SerialChain& chain,
                                            const std::vector<double>& link_mass_kg,
                                            double payload_kg) {
   const int n = chain.n_joints();
-  VRREG_THROW_UNLESS(link_mass_kg.size() == static_cast<std::size_t>(n),
-                     "gravity torques: " << link_mass_kg.size() << " link masses for " << n
-                                         << " joints");
+  VRREG_THROW_UNLESS(
+      link_mass_kg.size() == static_cast<std::size_t>(n),
+      "gravity torques: " << link_mass_kg.size() << " link masses for " << n << " joints");
   const std::vector<Eigen::Isometry3d> frames = kinematics::link_frames(chain, q_rad);
   const Eigen::Vector3d tcp = (frames.back() * chain.T_flange_tcp()).translation();
   const Eigen::Vector3d g(0.0, 0.0, -kGravity_m_per_s2);
@@ -52,8 +52,8 @@ kinematics::JointVector gravity_deflection_rad(const kinematics::SerialChain& ch
   kinematics::JointVector dq = gravity_torques_nm(chain, q_rad, link_mass_kg, payload_kg);
   for (int i = 0; i < n; ++i) {
     const double k = stiffness_nm_per_rad[static_cast<std::size_t>(i)];
-    VRREG_THROW_UNLESS(k > 0.0, "gravity deflection: joint " << i + 1 << " stiffness " << k
-                                                             << " is not positive");
+    VRREG_THROW_UNLESS(
+        k > 0.0, "gravity deflection: joint " << i + 1 << " stiffness " << k << " is not positive");
     dq(i) /= k;
   }
   return dq;

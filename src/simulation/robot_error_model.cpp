@@ -9,13 +9,12 @@ namespace vrreg::simulation {
 namespace {
 
 void check_value(double value, const char* name) {
-  VRREG_THROW_UNLESS(std::isfinite(value) && value >= 0.0,
-                     "robot error model: " << name << " must be finite and >= 0 (got " << value
-                                           << ")");
+  VRREG_THROW_UNLESS(
+      std::isfinite(value) && value >= 0.0,
+      "robot error model: " << name << " must be finite and >= 0 (got " << value << ")");
 }
 
-void check_list(const std::vector<double>& values, int n_joints, const char* name,
-                bool positive) {
+void check_list(const std::vector<double>& values, int n_joints, const char* name, bool positive) {
   VRREG_THROW_UNLESS(values.size() == static_cast<std::size_t>(n_joints),
                      "robot error model: " << name << " needs one value per joint (" << n_joints
                                            << "), got " << values.size());

@@ -39,8 +39,7 @@ SimulatedRobot::SimulatedRobot(kinematics::SerialChain nominal, RobotErrorModel 
   model_.validate(nominal_.n_joints());
   VRREG_THROW_UNLESS(
       errors_.transmission_phase_rad.size() == model_.transmission_amplitude_rad.size(),
-      "simulated robot: " << errors_.transmission_phase_rad.size()
-                          << " transmission phases for "
+      "simulated robot: " << errors_.transmission_phase_rad.size() << " transmission phases for "
                           << model_.transmission_amplitude_rad.size() << " amplitudes");
 }
 

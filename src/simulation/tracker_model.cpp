@@ -11,19 +11,19 @@ void TrackerModel::validate() const {
   VRREG_THROW_UNLESS(std::isfinite(distance_m) && distance_m > 0.0,
                      "tracker model: distance must be positive (got " << distance_m << " m)");
   VRREG_THROW_UNLESS(std::isfinite(azimuth_rad), "tracker model: azimuth is not finite");
-  VRREG_THROW_UNLESS(std::isfinite(elevation_rad) &&
-                         std::abs(elevation_rad) < 0.5 * std::numbers::pi,
-                     "tracker model: elevation must be within (-90, 90) deg (got "
-                         << elevation_rad << " rad)");
+  VRREG_THROW_UNLESS(
+      std::isfinite(elevation_rad) && std::abs(elevation_rad) < 0.5 * std::numbers::pi,
+      "tracker model: elevation must be within (-90, 90) deg (got " << elevation_rad << " rad)");
   VRREG_THROW_UNLESS(noise_sigma_m.allFinite() && noise_sigma_m.minCoeff() >= 0.0,
                      "tracker model: noise sigma must be finite and >= 0 (got "
                          << noise_sigma_m.transpose() << " m)");
-  VRREG_THROW_UNLESS(readings_per_location >= 1,
-                     "tracker model: readings per location must be >= 1 (got "
-                         << readings_per_location << ")");
+  VRREG_THROW_UNLESS(
+      readings_per_location >= 1,
+      "tracker model: readings per location must be >= 1 (got " << readings_per_location << ")");
 }
 
-RigidTransform tracker_pose(const TrackerModel& model, const Eigen::Vector3d& volume_centre_robot_m) {
+RigidTransform tracker_pose(const TrackerModel& model,
+                            const Eigen::Vector3d& volume_centre_robot_m) {
   model.validate();
   const double ce = std::cos(model.elevation_rad);
   const Eigen::Vector3d towards_tracker(ce * std::cos(model.azimuth_rad),

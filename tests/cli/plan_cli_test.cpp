@@ -2,6 +2,7 @@
 // its --force, unreachable part points named, bad parts files named by file and line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -43,8 +44,9 @@ class PlanCli : public ::testing::Test {
 };
 
 TEST_F(PlanCli, WritesAPlanInVisitingOrderAndSummarisesInMillimetres) {
-  const CliResult r = run_vrreg("plan --parts '" + parts_ +
-                                "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 -o '" + plan_ + "'");
+  const CliResult r =
+      run_vrreg("plan --parts '" + parts_ + "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 -o '" +
+                plan_ + "'");
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
   EXPECT_NE(r.out.find("d_min = 4.330 mm"), std::string::npos) << r.out;
@@ -92,7 +94,8 @@ TEST_F(PlanCli, JsonSummary) {
 TEST_F(PlanCli, DminBelowTheNoiseLimitFailsUnlessForced) {
   const std::string args = "plan --parts '" + parts_ +
                            "' --halfwidth-mm 2 --spacing-mm 1 --sigma-noise-mm 0.5 --robot ur5 "
-                           "-o '" + plan_ + "'";
+                           "-o '" +
+                           plan_ + "'";
   const CliResult r = run_vrreg(args);
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("d_min = 0.866 mm"), std::string::npos) << r.err;
@@ -108,8 +111,9 @@ TEST_F(PlanCli, DminBelowTheNoiseLimitFailsUnlessForced) {
 
 TEST_F(PlanCli, UnreachablePartPointIsNamedAndNothingWritten) {
   write_text(parts_, kParts + "far,1500,0,250\n");
-  const CliResult r = run_vrreg("plan --parts '" + parts_ +
-                                "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 -o '" + plan_ + "'");
+  const CliResult r =
+      run_vrreg("plan --parts '" + parts_ + "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 -o '" +
+                plan_ + "'");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("far (unreachable"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -118,8 +122,9 @@ TEST_F(PlanCli, UnreachablePartPointIsNamedAndNothingWritten) {
 
 TEST_F(PlanCli, Lwr4WithTestBedDefaults) {
   write_text(parts_, "point,robot_x_m,robot_y_m,robot_z_m\nA,0.48,0.22,0.30\nB,0.54,0.22,0.30\n");
-  const CliResult r = run_vrreg("plan --json --parts '" + parts_ +
-                                "' --halfwidth-mm 7.5 --spacing-mm 5 --robot lwr4 -o '" + plan_ + "'");
+  const CliResult r =
+      run_vrreg("plan --json --parts '" + parts_ +
+                "' --halfwidth-mm 7.5 --spacing-mm 5 --robot lwr4 -o '" + plan_ + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["psi_deg"].get<double>(), -15.0, 1e-9);
@@ -129,14 +134,17 @@ TEST_F(PlanCli, Lwr4WithTestBedDefaults) {
 
 TEST_F(PlanCli, BadInputIsOneLineNamingTheProblem) {
   write_text(parts_, "point,robot_x_mm,robot_y_mm,robot_z_mm\nP,1,2\n");
-  CliResult r = run_vrreg("plan --parts '" + parts_ + "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5");
+  CliResult r =
+      run_vrreg("plan --parts '" + parts_ + "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find(parts_ + ":2: expected 4 fields"), std::string::npos) << r.err;
   write_text(parts_, kParts);
-  r = run_vrreg("plan --parts '" + parts_ + "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 --psi-deg 10");
+  r = run_vrreg("plan --parts '" + parts_ +
+                "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 --psi-deg 10");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("--psi-deg"), std::string::npos) << r.err;
-  r = run_vrreg("plan --parts '" + parts_ + "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 --home-deg 1 2 3");
+  r = run_vrreg("plan --parts '" + parts_ +
+                "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 --home-deg 1 2 3");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("6 joints, got 3"), std::string::npos) << r.err;
   r = run_vrreg("plan --parts '" + parts_ + "' --halfwidth-mm 10 --spacing-mm 0 --robot ur5");

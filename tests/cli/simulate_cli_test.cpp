@@ -1,8 +1,7 @@
 // vrreg simulate as a user runs it: same seed same bytes, the seed printed, error-model files,
 // one-line errors, and the paper's register -> evaluate flow on a simulated A1.
-#include <unistd.h>
-
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "cli_runner.hpp"
 
@@ -49,8 +48,9 @@ TEST_F(SimulateCli, ErrorModelFileOverridesTheDefaults) {
 
 TEST_F(SimulateCli, BadInputFailsWithOneLine) {
   for (const std::string& args :
-       {std::string("simulate ur10 A1 -o ") + path("x.csv"), "simulate ur5 grid -o " + path("x.csv"),
-        "simulate lwr4 A1 -o " + path("x.csv"), std::string("simulate ur5 A1"),
+       {std::string("simulate ur10 A1 -o ") + path("x.csv"),
+        "simulate ur5 grid -o " + path("x.csv"), "simulate lwr4 A1 -o " + path("x.csv"),
+        std::string("simulate ur5 A1"),
         "simulate ur5 A1 --errors " + path("missing.json") + " -o " + path("x.csv")}) {
     const CliResult r = run_vrreg(args);
     EXPECT_EQ(r.status, 1) << args << "\n" << r.err;

@@ -1,11 +1,11 @@
 // Simulated test beds through the whole pipeline: measurement files, registration, Strategy 2 and
 // the calibration against the paper (issue 4).
+#include <gtest/gtest.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <gtest/gtest.h>
 
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/experiments/strategy2.hpp"
@@ -59,8 +59,8 @@ TEST(SimulationPipeline, SameSeedSameBytes) {
   EXPECT_TRUE(a == b);
   EXPECT_FALSE(a == c);
   // The file written to disk is that text.
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("vrreg_sim_" + std::to_string(::getpid()) + ".csv");
+  const auto path =
+      std::filesystem::temp_directory_path() / ("vrreg_sim_" + std::to_string(::getpid()) + ".csv");
   io::write_simulated_dataset_csv(path.string(),
                                   simulation::simulate_dataset(testbed, Dataset::kA1, {42, {}}));
   std::ifstream file(path, std::ios::binary);
@@ -75,10 +75,11 @@ TEST(SimulationPipeline, HeaderStatesTestbedDatasetSeedAndEveryParameter) {
       simulation::simulate_dataset(testbed, Dataset::kGrid, {17, {}});
   const std::string text = csv_text(data);
   for (const char* fragment :
-       {"test bed lwr4, dataset grid, seed 17", "joint offset sigma 0.3 deg", "link length (a) sigma",
-        "link offset (d) sigma", "twist (alpha) sigma", "A_arcmin [0.75", "P_deg [20, 18, 24",
-        "repeatability sigma 0.03 mm", "compliance under gravity off", "1.8 m from the volume centre",
-        "[0.058, 0.058, 0.058] mm", "K = 1 readings", "joint 7: dtheta", "T_robot_sensor"}) {
+       {"test bed lwr4, dataset grid, seed 17", "joint offset sigma 0.3 deg",
+        "link length (a) sigma", "link offset (d) sigma", "twist (alpha) sigma", "A_arcmin [0.75",
+        "P_deg [20, 18, 24", "repeatability sigma 0.03 mm", "compliance under gravity off",
+        "1.8 m from the volume centre", "[0.058, 0.058, 0.058] mm", "K = 1 readings",
+        "joint 7: dtheta", "T_robot_sensor"}) {
     EXPECT_NE(text.find(fragment), std::string::npos) << fragment;
   }
   std::istringstream in(text);
@@ -98,7 +99,9 @@ TEST(SimulationPipeline, Strategy2ReordersAboutOneLocationInSeven) {
   for (std::size_t p = 0; p < data.locations.size(); ++p) {
     Eigen::MatrixXd q(7, 4);
     for (int m = 0; m < 4; ++m) {
-      for (int i = 0; i < 7; ++i) q(i, m) = set.locations[4 * p + static_cast<std::size_t>(m)].q_rad[static_cast<std::size_t>(i)];
+      for (int i = 0; i < 7; ++i)
+        q(i, m) =
+            set.locations[4 * p + static_cast<std::size_t>(m)].q_rad[static_cast<std::size_t>(i)];
     }
     configurations.push_back(q);
   }

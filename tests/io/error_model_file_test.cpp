@@ -42,7 +42,8 @@ void expect_same(const simulation::TestbedErrorModel& a, const simulation::Testb
 
 TEST(ErrorModelFile, RoundTripsEveryParameter) {
   TempDir dir;
-  for (const simulation::Testbed& testbed : {simulation::ur5_testbed(), simulation::lwr4_testbed()}) {
+  for (const simulation::Testbed& testbed :
+       {simulation::ur5_testbed(), simulation::lwr4_testbed()}) {
     simulation::TestbedErrorModel model = testbed.default_errors;
     model.robot.compliance = true;
     model.robot.payload_kg = 0.37;
@@ -87,8 +88,8 @@ TEST(ErrorModelFile, BadContentNamesFileAndKey) {
   };
   EXPECT_TRUE(throws_file_error(parse(R"({"robot": {"joint_offset_sigma": 1}})", "a.json"),
                                 "a.json", 0, "robot.joint_offset_sigma: unknown key"));
-  EXPECT_TRUE(throws_file_error(parse(R"({"robots": {}})", "b.json"), "b.json", 0,
-                                "robots: unknown key"));
+  EXPECT_TRUE(
+      throws_file_error(parse(R"({"robots": {}})", "b.json"), "b.json", 0, "robots: unknown key"));
   EXPECT_TRUE(throws_file_error(
       parse(R"({"robot": {"transmission_period_deg": [1, 2]}})", "c.json"), "c.json", 0,
       "robot.transmission_period_deg: expected a list of 6 numbers"));

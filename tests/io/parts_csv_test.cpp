@@ -1,9 +1,10 @@
 // The parts file of `vrreg plan` (Procedure 1): what it accepts, and one FileError line naming
 // file and line for every kind of bad input.
+#include "vrreg/io/parts_csv.hpp"
+
 #include <gtest/gtest.h>
 
 #include "io_test_helpers.hpp"
-#include "vrreg/io/parts_csv.hpp"
 
 namespace vrreg::io {
 namespace {
@@ -72,8 +73,8 @@ TEST_F(PartsCsv, BadHeader) {
   EXPECT_TRUE(fails("point,robot_x_mm,robot_y_m,robot_z_mm\nP,1,2,3\n", 1, "mixed length units"));
   EXPECT_TRUE(fails("point,robot_x,robot_y_mm,robot_z_mm\nP,1,2,3\n", 1, "no unit suffix"));
   EXPECT_TRUE(fails("point,robot_x_in,robot_y_mm,robot_z_mm\nP,1,2,3\n", 1, "_mm or _m"));
-  EXPECT_TRUE(fails("point,point,robot_x_mm,robot_y_mm,robot_z_mm\nP,P,1,2,3\n", 1,
-                    "duplicate column"));
+  EXPECT_TRUE(
+      fails("point,point,robot_x_mm,robot_y_mm,robot_z_mm\nP,P,1,2,3\n", 1, "duplicate column"));
   EXPECT_TRUE(fails("point,,robot_x_mm,robot_y_mm,robot_z_mm\nP,,1,2,3\n", 1, "empty column name"));
   EXPECT_TRUE(fails("point,part,robot_x_mm,robot_y_mm,robot_z_mm\nP,Q,1,2,3\n", 1,
                     "unknown column 'part'"));

@@ -1,9 +1,10 @@
 // The plan file: written exactly and read back; bad plan files give one FileError line.
+#include "vrreg/io/plan_csv.hpp"
+
 #include <gtest/gtest.h>
 
 #include "io_test_helpers.hpp"
 #include "vrreg/core/check.hpp"
-#include "vrreg/io/plan_csv.hpp"
 
 namespace vrreg::io {
 namespace {
@@ -13,9 +14,16 @@ using vrreg::testing::throws_file_error;
 
 std::vector<PlanRow> sample_rows() {
   std::vector<PlanRow> rows(3);
-  rows[0] = {"P.f0-0-0", Role::kFiducial, "P", {0.4475, -0.1025, 0.2475}, 1, {0.1, -1.2, 1.3, -0.3, -1.5707963267948966, 2.0}, 0};
-  rows[1] = {"P", Role::kTarget, "P", {0.45, -0.1, 0.25}, 1, {0.11, -1.21, 1.31, -0.31, -1.57, 2.01}, 0};
-  rows[2] = {"P.f1-0-0", Role::kFiducial, "P", {0.4525, -0.1025, 0.2475}, 1, {1.0 / 3.0, -1.2, 1.3, -0.3, -1.5, 2.0}, 0};
+  rows[0] = {"P.f0-0-0", Role::kFiducial,
+             "P",        {0.4475, -0.1025, 0.2475},
+             1,          {0.1, -1.2, 1.3, -0.3, -1.5707963267948966, 2.0},
+             0};
+  rows[1] = {
+      "P", Role::kTarget, "P", {0.45, -0.1, 0.25}, 1, {0.11, -1.21, 1.31, -0.31, -1.57, 2.01}, 0};
+  rows[2] = {"P.f1-0-0", Role::kFiducial,
+             "P",        {0.4525, -0.1025, 0.2475},
+             1,          {1.0 / 3.0, -1.2, 1.3, -0.3, -1.5, 2.0},
+             0};
   return rows;
 }
 
@@ -24,8 +32,9 @@ TEST(PlanCsv, RoundTripsExactly) {
   const std::string path = dir.file("plan.csv");
   write_plan_csv(path, sample_rows(), {"vrreg plan", "robot: ur5\nspacing_mm: 5", ""});
   const std::string text = vrreg::testing::read_text(path);
-  EXPECT_TRUE(text.starts_with("# vrreg plan\n# robot: ur5\n# spacing_mm: 5\n#\n"
-                               "point,role,part,robot_x_mm,robot_y_mm,robot_z_mm,config,q1_rad,"))
+  EXPECT_TRUE(
+      text.starts_with("# vrreg plan\n# robot: ur5\n# spacing_mm: 5\n#\n"
+                       "point,role,part,robot_x_mm,robot_y_mm,robot_z_mm,config,q1_rad,"))
       << text;
   const PlanFile back = read_plan_csv(path);
   ASSERT_EQ(back.rows.size(), 3u);
@@ -64,9 +73,9 @@ TEST(PlanCsv, WriterRefusesInconsistentRows) {
 
 TEST(PlanCsv, ReaderTakesMinimalPlansAndDegrees) {
   TempDir dir;
-  const std::string path =
-      dir.write("p.csv", "Robot_X_M,robot_y_m,robot_z_m,POINT,role,q1_deg,q2_deg\n"
-                         "0.4,0.1,0.2,A,fiducial,90,-90\n0.5,0.1,0.2,B,target,0,0\n");
+  const std::string path = dir.write("p.csv",
+                                     "Robot_X_M,robot_y_m,robot_z_m,POINT,role,q1_deg,q2_deg\n"
+                                     "0.4,0.1,0.2,A,fiducial,90,-90\n0.5,0.1,0.2,B,target,0,0\n");
   const PlanFile plan = read_plan_csv(path);
   ASSERT_EQ(plan.rows.size(), 2u);
   EXPECT_FALSE(plan.has_config);

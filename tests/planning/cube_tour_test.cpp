@@ -1,11 +1,12 @@
 // Order of the cubes: a permutation, travel reported right, never worse than the input order,
 // and the obvious order on a line of cubes.
+#include "vrreg/planning/cube_tour.hpp"
+
 #include <algorithm>
 #include <numeric>
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/random.hpp"
-#include "vrreg/planning/cube_tour.hpp"
 #include "vrreg/planning/fiducial_grid.hpp"
 #include "vrreg/planning/serpentine.hpp"
 #include "vrreg_test.hpp"
@@ -56,7 +57,8 @@ TEST(CubeTour, CubesOnALineAreVisitedAlongTheLine) {
   const Offsets o = offsets(g);
   Points3 centres(3, 5);
   const std::vector<double> x{0.2, 0.0, 0.3, 0.1, 0.4};
-  for (int i = 0; i < 5; ++i) centres.col(i) = Eigen::Vector3d(x[static_cast<std::size_t>(i)], 0, 0);
+  for (int i = 0; i < 5; ++i)
+    centres.col(i) = Eigen::Vector3d(x[static_cast<std::size_t>(i)], 0, 0);
   const CubeTour tour = plan_cube_tour(centres, o.entry, o.exit);
   const std::vector<int> forward{1, 3, 0, 2, 4};
   std::vector<int> backward(forward.rbegin(), forward.rend());

@@ -1,11 +1,12 @@
 // The fiducial cube of Procedure 1 (paper section 6): counts, spacing, the part point at the
 // centre of a cell, d = sqrt(3)/2 A, and how the half-width is rounded.
+#include "vrreg/planning/fiducial_grid.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/planning/fiducial_grid.hpp"
 #include "vrreg_test.hpp"
 
 namespace vrreg::planning {
@@ -16,9 +17,9 @@ TEST(CubeGeometry, RoundsTheHalfWidthUpToAnOddNumberOfCells) {
     double s_mm, a_mm, covered_mm;
     int nodes;
   };
-  for (const Case c : {Case{10, 5, 12.5, 6}, Case{7.5, 5, 7.5, 4}, Case{2.5, 5, 2.5, 2},
-                       Case{1, 5, 2.5, 2}, Case{12.5, 5, 12.5, 6}, Case{12.6, 5, 17.5, 8},
-                       Case{25, 12.5, 31.25, 6}}) {
+  for (const Case c :
+       {Case{10, 5, 12.5, 6}, Case{7.5, 5, 7.5, 4}, Case{2.5, 5, 2.5, 2}, Case{1, 5, 2.5, 2},
+        Case{12.5, 5, 12.5, 6}, Case{12.6, 5, 17.5, 8}, Case{25, 12.5, 31.25, 6}}) {
     const CubeGeometry g = cube_geometry(c.s_mm * 1e-3, c.a_mm * 1e-3);
     EXPECT_EQ(g.nodes_per_axis, c.nodes) << c.s_mm << " / " << c.a_mm;
     EXPECT_NEAR(g.halfwidth_m, c.covered_mm * 1e-3, 1e-15) << c.s_mm << " / " << c.a_mm;

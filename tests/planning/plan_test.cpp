@@ -1,5 +1,7 @@
 // The whole of Procedure 1 on the UR5 and the LWR 4+: grid per cube, visiting order and the joints
 // of every location (FK back to the position, nearest IK solution to the part point's joints).
+#include "vrreg/planning/plan.hpp"
+
 #include <map>
 #include <set>
 
@@ -8,7 +10,6 @@
 #include "vrreg/kinematics/inverse_kinematics.hpp"
 #include "vrreg/kinematics/pose.hpp"
 #include "vrreg/kinematics/robots.hpp"
-#include "vrreg/planning/plan.hpp"
 #include "vrreg_test.hpp"
 
 namespace vrreg::planning {
@@ -139,8 +140,8 @@ TEST(Plan, Ur5HomeJointsChooseThePartConfiguration) {
 TEST(Plan, Lwr4AtAFixedArmAngle) {
   const SerialChain chain =
       kinematics::lwr4().with_tool(Eigen::Isometry3d(Eigen::Translation3d(0, 0, 0.1)));
-  const std::vector<PartPoint> parts{{"A", {0.48, 0.22, 0.30}}, {"B", {0.54, 0.22, 0.30}},
-                                     {"C", {0.54, 0.30, 0.31}}};
+  const std::vector<PartPoint> parts{
+      {"A", {0.48, 0.22, 0.30}}, {"B", {0.54, 0.22, 0.30}}, {"C", {0.54, 0.30, 0.31}}};
   PlanOptions o;
   o.halfwidth_m = 0.0075;
   o.spacing_m = 0.005;

@@ -1,9 +1,10 @@
 // Visiting order inside a cube: every node once, consecutive nodes one grid step apart (paper
 // Fig. 2), for every start corner and axis order; the target goes between two cell corners.
+#include "vrreg/planning/serpentine.hpp"
+
 #include <set>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/planning/serpentine.hpp"
 #include "vrreg_test.hpp"
 
 namespace vrreg::planning {

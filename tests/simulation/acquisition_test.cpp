@@ -173,7 +173,6 @@ TEST(Acquisition, RepeatReadingsAndVisitsHaveTheConfiguredSpread) {
 }
 
 TEST(Acquisition, LargeUr5DatasetsHaveThePapersCounts) {
-  if (testing::sanitized()) GTEST_SKIP() << "plan counts are checked without IK under sanitizers";
   const Testbed testbed = ur5_testbed();
   const SimulatedDataset a2 = simulate_dataset(testbed, Dataset::kA2, {});
   EXPECT_EQ(a2.visits.size(), 8925u);

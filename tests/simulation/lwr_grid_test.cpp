@@ -17,7 +17,7 @@ namespace {
 
 TEST(Serpentine, VisitsEveryNodeOnceInUnitSteps) {
   for (const Eigen::Vector3i& n : {Eigen::Vector3i(13, 11, 11), Eigen::Vector3i(4, 3, 2),
-                                  Eigen::Vector3i(5, 6, 4), Eigen::Vector3i(1, 1, 3)}) {
+                                   Eigen::Vector3i(5, 6, 4), Eigen::Vector3i(1, 1, 3)}) {
     const std::vector<Eigen::Vector3i> order = serpentine_order(n.x(), n.y(), n.z());
     ASSERT_EQ(order.size(), static_cast<std::size_t>(n.prod()));
     std::set<std::tuple<int, int, int>> seen;
@@ -73,7 +73,8 @@ TEST_F(LwrGridData, FourConfigurationsPerLocationOneReadingEach) {
   for (std::size_t p = 0; p < data.locations.size(); ++p) {
     std::set<int> configs;
     for (std::size_t m = 0; m < 4; ++m) {
-      configs.insert(kinematics::lwr_configuration(testbed.nominal, data.visits[4 * p + m].q_rad).index());
+      configs.insert(
+          kinematics::lwr_configuration(testbed.nominal, data.visits[4 * p + m].q_rad).index());
     }
     ASSERT_EQ(configs.size(), 4u) << data.locations[p].point;
   }
@@ -86,7 +87,8 @@ TEST_F(LwrGridData, EnumerationOrderChangesOverPartOfTheVolumeOnly) {
   const auto order_at = [&](std::size_t p) {
     std::vector<int> order;
     for (std::size_t m = 0; m < 4; ++m) {
-      order.push_back(kinematics::lwr_configuration(testbed.nominal, data.visits[4 * p + m].q_rad).index());
+      order.push_back(
+          kinematics::lwr_configuration(testbed.nominal, data.visits[4 * p + m].q_rad).index());
     }
     return order;
   };
@@ -102,7 +104,8 @@ TEST_F(LwrGridData, EnumerationOrderChangesOverPartOfTheVolumeOnly) {
   EXPECT_LT(fraction, 0.20);
   // Regions, not a shuffle: few changes along the path (a shuffle changes at almost every
   // step) and the changed locations form few connected regions of the grid.
-  EXPECT_LT(changes_along_path, static_cast<int>(0.15 * static_cast<double>(data.locations.size())));
+  EXPECT_LT(changes_along_path,
+            static_cast<int>(0.15 * static_cast<double>(data.locations.size())));
   const std::vector<Eigen::Vector3i> nodes = serpentine_order(13, 11, 11);
   std::vector<int> state(13 * 11 * 11, 0);  // 1 = changed, 2 = changed and visited
   const auto at = [](const Eigen::Vector3i& n) { return n.x() + 13 * (n.y() + 11 * n.z()); };

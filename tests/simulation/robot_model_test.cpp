@@ -147,7 +147,8 @@ TEST(GravityCompliance, VerticalArmFeelsNoTorqueAndALeverArmSags) {
   RobotErrors errors;
   errors.dh_delta.resize(7);
   const SimulatedRobot robot(lwr, model, errors);
-  const double sag = robot.actual_tcp_m(q).z() - kinematics::forward_kinematics(lwr, q).translation().z();
+  const double sag =
+      robot.actual_tcp_m(q).z() - kinematics::forward_kinematics(lwr, q).translation().z();
   EXPECT_LT(sag, -1e-4);
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // The registration model that `register` writes and `evaluate` / `correct` read: the transform,
 // the fiducials it came from, their RRBC corrections (Eq. 6) and how to interpolate them (Eq. 7).
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +27,14 @@ struct InterpolationSettings {
   double match_tolerance_m = 1e-6;    ///< how close a fiducial must be to a cube corner / grid node
 };
 
+/// Procedure 2 (paper section 4.4): how a model treats arm configurations.
+struct ConfigurationStrategy {
+  int strategy = 0;               ///< 0: rows as in the file (no strategy); else 1, 2 or 3
+  std::string joint_norm = "l2";  ///< Strategies 2 and 3: joint-space distance, "l2" or "linf"
+  std::optional<std::uint64_t> seed;  ///< Strategy 3: seed of the random volume-corner choice
+  std::vector<std::size_t> registration_fiducials;  ///< Strategy 3: fiducials registered (Eq. 2)
+};
+
 /// Everything needed to correct new targets: the registration and the fiducial corrections.
 struct RegistrationModel {
   static constexpr int kFormatVersion = 1;
@@ -33,6 +43,9 @@ struct RegistrationModel {
   Points3 corrections_sensor_m;      ///< epsilon_j (Eq. 6), one column per fiducial, sensor frame
   InterpolationSettings interpolation;
   std::optional<int> config;         ///< configuration label the model was built for, if any
+  /// Strategy 2: `fiducials` carry Strategy 2 labels. Strategy 3: `fiducials` hold every arm
+  /// configuration, corrected against the one registration from `registration_fiducials`.
+  ConfigurationStrategy procedure2;
   double fre_m = 0.0;                ///< FRE of the registration (Eq. 2)
   double sigma_l_m = 0.0;            ///< sigma_L over fiducial pairs (Eq. 1)
   std::string source;                ///< the fiducial file it came from

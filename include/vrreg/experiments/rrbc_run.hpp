@@ -17,22 +17,22 @@ struct RrbcRunOptions {
   double sigma_rep_m = 0.0;             ///< robot repeatability for sigma_noise (Eq. 9) [m]
   /// sigma_opt to use instead of the fiducials' repeat readings (e.g. K = 1) [m].
   std::optional<double> sigma_opt_m;
-  bool rigid_body_statistics = true;    ///< compute sigma_L (all pairs; the slow part)
+  bool rigid_body_statistics = true;  ///< compute sigma_L (all pairs; the slow part)
 };
 
 /// The figures of one run (paper Tables 1 and 2); lengths in m, gamma a fraction.
 struct RrbcRunFigures {
   int n_fiducials = 0;
   int n_targets = 0;
-  double sigma_opt_m = 0.0;    ///< from repeat readings (or the option); 0 when unknown
-  double sigma_l_m = 0.0;      ///< 0 when not computed
+  double sigma_opt_m = 0.0;  ///< from repeat readings (or the option); 0 when unknown
+  double sigma_l_m = 0.0;    ///< 0 when not computed
   double sigma_noise_m = 0.0;
   double rho = 0.0;
   double unc_rms_t_m = 0.0;
   double cor_rms_t_m = 0.0;
   double gamma = 0.0;
   int n_bad = 0;
-  int n_flagged = 0;           ///< targets the interpolation could not correct
+  int n_flagged = 0;  ///< targets the interpolation could not correct
 };
 
 /// Runs the pipeline with fiducials `fiducials` and targets `targets` (indices into `set`).

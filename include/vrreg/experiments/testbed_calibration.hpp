@@ -28,16 +28,16 @@ struct Ur5SeedFigures {
   RrbcRunFigures a1;
   RrbcRunFigures a2;
   double b_unc_rms_t_m = 0.0;
-  std::vector<double> b_cube_edge_m;   ///< 50 mm down to 5 mm
-  std::vector<double> b_cor_rms_t_m;   ///< per cube edge
-  std::vector<int> b_n_bad;            ///< per cube edge
-  double seconds = 0.0;                ///< simulation + pipeline time
+  std::vector<double> b_cube_edge_m;  ///< 50 mm down to 5 mm
+  std::vector<double> b_cor_rms_t_m;  ///< per cube edge
+  std::vector<int> b_n_bad;           ///< per cube edge
+  double seconds = 0.0;               ///< simulation + pipeline time
 };
 
 /// KUKA figures of one seed: per configuration label, Strategies 1 and 2 (octuplet 40 mm).
 struct Lwr4SeedFigures {
   std::uint64_t seed = 0;
-  double switched_fraction = 0.0;      ///< points Strategy 2 reorders (paper: 0.14)
+  double switched_fraction = 0.0;  ///< points Strategy 2 reorders (paper: 0.14)
   std::array<RrbcRunFigures, 4> strategy1;
   std::array<RrbcRunFigures, 4> strategy2;
   double seconds = 0.0;

@@ -3,7 +3,9 @@
 // "version": 1, "units": {"length": "mm", "angle": "rad"}, rotation (3x3 rows), translation_mm,
 // scale, fre_mm, sigma_l_mm, config (or null), source, interpolation {method, cube_mm,
 // match_tolerance_mm} and fiducials [{point, config, robot_mm, sensor_mm, n_readings,
-// sensor_sq_dev_mm2, q_rad (omitted when empty), correction_mm}]. Numbers are written in the
+// sensor_sq_dev_mm2, q_rad (omitted when empty), correction_mm}], and for models built with a
+// Procedure 2 strategy (section 4.4) procedure2 {strategy, joint_norm, seed (Strategy 3),
+// registration_fiducials (Strategy 3: indices into fiducials)}. Numbers are written in the
 // shortest form that reads back exactly; unknown keys are ignored when reading.
 #include <string>
 

@@ -13,12 +13,11 @@
 // once. `#` lines are comments; blank lines, CRLF, a UTF-8 BOM and a missing final newline are
 // fine; quoted fields, unknown columns, short or long rows, non-finite numbers, a point label used
 // at two positions, or no part point at all throw FileError naming the file and line.
+#include <Eigen/Core>
 #include <cstddef>
 #include <istream>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace vrreg::io {
 

@@ -8,13 +8,12 @@
 // whose cube the row belongs to. `#` comment lines (written first) hold the planning parameters.
 // The reader takes the columns in any order (case-insensitive, _m / _deg allowed); part, config
 // and joints are optional; (point, config) must be unique; bad input throws FileError.
+#include <Eigen/Core>
 #include <cstddef>
 #include <istream>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/measurement.hpp"
 
@@ -24,7 +23,7 @@ namespace vrreg::io {
 struct PlanRow {
   std::string point;  ///< label: not empty, no comma, quote, newline, leading '#' or spaces
   Role role = Role::kFiducial;
-  std::string part;   ///< part point of its cube (same label rules; empty when not given)
+  std::string part;  ///< part point of its cube (same label rules; empty when not given)
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();  ///< TCP position, robot base frame [m]
   std::optional<int> config;  ///< configuration label index (all rows or none)
   std::vector<double> q_rad;  ///< commanded joints [rad] (same count in every row)

@@ -2,10 +2,9 @@
 // Arm configurations for a plan (paper section 6 with section 4.4): each part point is reached by
 // an IK solution of a fixed tool orientation, and each of its fiducials by the IK solution nearest
 // the part point's joints, so fiducials and target share the arm configuration.
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
-
-#include <Eigen/Geometry>
 
 #include "vrreg/kinematics/configuration_label.hpp"
 #include "vrreg/kinematics/ik_result.hpp"
@@ -20,7 +19,7 @@ Eigen::Matrix3d tool_pointing_down();
 
 /// How joints are chosen for every planned location.
 struct ArmConfigurationOptions {
-  Eigen::Matrix3d R_base_tcp = tool_pointing_down();  ///< fixed TCP orientation, base frame
+  Eigen::Matrix3d R_base_tcp = tool_pointing_down();        ///< fixed TCP orientation, base frame
   kinematics::JointNorm norm = kinematics::JointNorm::kL2;  ///< nearest-configuration norm
   double psi_rad = 0.0;  ///< LWR arm angle for every location [rad] (UR: unused)
   /// Part points take the IK solution nearest these joints [rad] (2 pi shifts included); when
@@ -34,10 +33,10 @@ struct ArmConfigurationOptions {
 /// Joints chosen for one location, or why there are none.
 struct JointChoice {
   kinematics::IkStatus status = kinematics::IkStatus::kUnreachable;
-  std::string message;                 ///< why not (empty when ok)
-  kinematics::JointVector q_rad;       ///< commanded joints [rad], within the limits
+  std::string message;            ///< why not (empty when ok)
+  kinematics::JointVector q_rad;  ///< commanded joints [rad], within the limits
   kinematics::ConfigurationLabel config;
-  double distance_rad = 0.0;           ///< joint distance to the reference (options.norm)
+  double distance_rad = 0.0;  ///< joint distance to the reference (options.norm)
   [[nodiscard]] bool ok() const { return status == kinematics::IkStatus::kOk; }
 };
 

@@ -8,9 +8,8 @@
 // each candidate an exact dynamic programme over the serpentine variants of every cube picks the
 // entry and exit corners; the candidate with the least travel wins. Because the input order is a
 // candidate, the result is never worse than the input order with any fixed variants.
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "vrreg/core/types.hpp"
 
@@ -18,8 +17,8 @@ namespace vrreg::planning {
 
 /// The cubes' visiting sequence and serpentine variants.
 struct CubeTour {
-  std::vector<int> order;    ///< cube indices in visiting order (a permutation of 0..M-1)
-  std::vector<int> variant;  ///< serpentine variant (0..47) of cube order[k], per k
+  std::vector<int> order;        ///< cube indices in visiting order (a permutation of 0..M-1)
+  std::vector<int> variant;      ///< serpentine variant (0..47) of cube order[k], per k
   double between_cubes_m = 0.0;  ///< sum of the exit-to-entry distances between cubes [m]
 };
 

@@ -5,11 +5,10 @@
 // one its part point is reached in (arm_configuration.hpp), and a visiting order: a serpentine in
 // each cube (serpentine.hpp), the part point visited inside it, cubes ordered to keep the travel
 // between them short (cube_tour.hpp).
+#include <Eigen/Core>
 #include <array>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/kinematics/configuration_label.hpp"
@@ -47,14 +46,14 @@ const char* to_string(PlanStatus status);
 
 /// One location of the plan, in visiting order.
 struct PlannedLocation {
-  std::string point;                  ///< label (part name for the target)
-  Role role = Role::kFiducial;        ///< the part point itself is the target
-  int part = 0;                       ///< index of its part point
+  std::string point;                                     ///< label (part name for the target)
+  Role role = Role::kFiducial;                           ///< the part point itself is the target
+  int part = 0;                                          ///< index of its part point
   Eigen::Vector3i grid_index = Eigen::Vector3i::Zero();  ///< node indices; kCentreIndex: target
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();     ///< TCP position, robot base frame [m]
-  kinematics::JointVector q_rad;      ///< commanded joints [rad]
+  kinematics::JointVector q_rad;                         ///< commanded joints [rad]
   kinematics::ConfigurationLabel config;
-  double joint_distance_rad = 0.0;    ///< to its part point's joints (options.arm.norm) [rad]
+  double joint_distance_rad = 0.0;  ///< to its part point's joints (options.arm.norm) [rad]
 };
 
 /// Per part point: its cube and configuration.
@@ -67,9 +66,9 @@ struct PartPlan {
   bool reachable = false;
   kinematics::JointVector q_rad;  ///< joints of the part point [rad] (when reachable)
   kinematics::ConfigurationLabel config;
-  long long n_other_config = 0;          ///< fiducials whose configuration label differs
-  double max_joint_distance_rad = 0.0;   ///< largest fiducial-to-part joint distance [rad]
-  int visit_rank = -1;                   ///< position of its cube in the visiting order
+  long long n_other_config = 0;         ///< fiducials whose configuration label differs
+  double max_joint_distance_rad = 0.0;  ///< largest fiducial-to-part joint distance [rad]
+  int visit_rank = -1;                  ///< position of its cube in the visiting order
 };
 
 /// A location without joints, and why.
@@ -84,12 +83,12 @@ struct PlanResult {
   std::string message;  ///< why not ok (names the first unreachable locations)
   CubeGeometry cube;
   DminCheck dmin;
-  std::vector<PartPlan> parts;                    ///< in input order
-  std::vector<PlannedLocation> locations;         ///< in visiting order
-  std::vector<UnreachableLocation> unreachable;   ///< every location without joints
-  std::vector<std::array<int, 2>> overlapping;    ///< part pairs whose cubes overlap or touch
-  double within_cubes_m = 0.0;         ///< travel inside the cubes [m]
-  double between_cubes_m = 0.0;        ///< travel between cubes, planned order [m]
+  std::vector<PartPlan> parts;                   ///< in input order
+  std::vector<PlannedLocation> locations;        ///< in visiting order
+  std::vector<UnreachableLocation> unreachable;  ///< every location without joints
+  std::vector<std::array<int, 2>> overlapping;   ///< part pairs whose cubes overlap or touch
+  double within_cubes_m = 0.0;                   ///< travel inside the cubes [m]
+  double between_cubes_m = 0.0;                  ///< travel between cubes, planned order [m]
   double naive_between_cubes_m = 0.0;  ///< the same for input order, serpentine variant 0 [m]
   [[nodiscard]] bool ok() const { return status == PlanStatus::kOk; }
 };

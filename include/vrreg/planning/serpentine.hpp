@@ -1,11 +1,10 @@
 #pragma once
 // Visiting order inside one fiducial cube (paper section 4.2, Fig. 2): a 3D serpentine
 // (boustrophedon) whose consecutive nodes are always one grid step apart.
+#include <Eigen/Core>
 #include <array>
 #include <cstddef>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace vrreg::planning {
 

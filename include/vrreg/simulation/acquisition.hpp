@@ -2,12 +2,11 @@
 // Acquisition of a dataset on a simulated test bed (paper sections 4.1, 4.2): the controller
 // turns each nominal location into joints with the nominal model, the robot lands where its
 // actual model and errors put it, and the tracker reads the sphere K times per visit.
+#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/types.hpp"
 #include "vrreg/kinematics/joint_vector.hpp"
@@ -25,28 +24,28 @@ struct SimulationOptions {
 
 /// One visit of the arm: a location in one arm configuration.
 struct SimulatedVisit {
-  int location = 0;                ///< index into SimulatedDataset::locations
-  int config = 0;                  ///< LWR: label 1..4 in the IK module's order; UR: 0 (none)
-  kinematics::JointVector q_rad;   ///< commanded joints, as the controller reports them [rad]
+  int location = 0;               ///< index into SimulatedDataset::locations
+  int config = 0;                 ///< LWR: label 1..4 in the IK module's order; UR: 0 (none)
+  kinematics::JointVector q_rad;  ///< commanded joints, as the controller reports them [rad]
   Eigen::Vector3d tcp_m = Eigen::Vector3d::Zero();  ///< true TCP position of the visit [m, base]
 };
 
 /// One tracker reading of a visit.
 struct SimulatedReading {
-  int visit = 0;   ///< index into SimulatedDataset::visits
-  int repeat = 0;  ///< 0..K-1
+  int visit = 0;                                       ///< index into SimulatedDataset::visits
+  int repeat = 0;                                      ///< 0..K-1
   Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();  ///< measured position, sensor frame [m]
 };
 
 /// A simulated dataset: locations, visits and readings in visiting order, plus the truth.
 struct SimulatedDataset {
-  std::string testbed;               ///< "ur5" or "lwr4"
+  std::string testbed;  ///< "ur5" or "lwr4"
   Dataset dataset = Dataset::kA1;
   std::uint64_t seed = 0;
-  TestbedErrorModel errors;          ///< the error model used
-  RobotErrors robot;                 ///< the robot the seed drew
-  RigidTransform T_robot_sensor;     ///< the true tracker pose
-  double sigma_rep_spec_m = 0.0;     ///< the robot's specified repeatability
+  TestbedErrorModel errors;       ///< the error model used
+  RobotErrors robot;              ///< the robot the seed drew
+  RigidTransform T_robot_sensor;  ///< the true tracker pose
+  double sigma_rep_spec_m = 0.0;  ///< the robot's specified repeatability
   std::vector<PlannedLocation> locations;
   std::vector<SimulatedVisit> visits;
   std::vector<SimulatedReading> readings;

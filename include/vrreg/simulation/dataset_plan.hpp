@@ -2,11 +2,10 @@
 // The paper's datasets as lists of nominal locations in visiting order (sections 4.1, 4.2):
 // UR5 A1 / A2 (regular grids, targets at odd grid indices), B (the A1 targets, each with ten
 // octuplet cubes of edge 50 -> 5 mm) and the LWR 4+ grid (a serpentine path of unit steps).
+#include <Eigen/Core>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/simulation/testbed.hpp"

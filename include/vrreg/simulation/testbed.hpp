@@ -2,10 +2,9 @@
 // The paper's two test beds (section 4): a UR5 and a KUKA LWR 4+, each carrying a tracked sphere
 // (the TCP) in a work volume seen by an OptiTrack-like tracker, with default error parameters
 // calibrated so that the simulated data look like the paper's (docs/testbed-calibration.md).
+#include <Eigen/Core>
 #include <string>
 #include <string_view>
-
-#include <Eigen/Core>
 
 #include "vrreg/kinematics/joint_vector.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
@@ -35,16 +34,16 @@ enum class TestbedKind {
 /// A test bed: robot, fixed geometry of the cell and default errors.
 struct Testbed {
   TestbedKind kind = TestbedKind::kUr5;
-  std::string name;                       ///< "ur5" or "lwr4"
-  kinematics::SerialChain nominal;        ///< the controller's model; TCP = the tracked sphere
-  Eigen::Matrix3d tcp_rotation;           ///< commanded TCP orientation, base frame (fixed)
-  Eigen::Vector3d volume_centre_m;        ///< centre of the work volume, base frame [m]
-  double arm_angle_rad = 0.0;             ///< LWR: the arm angle psi every location is sent with
+  std::string name;                 ///< "ur5" or "lwr4"
+  kinematics::SerialChain nominal;  ///< the controller's model; TCP = the tracked sphere
+  Eigen::Matrix3d tcp_rotation;     ///< commanded TCP orientation, base frame (fixed)
+  Eigen::Vector3d volume_centre_m;  ///< centre of the work volume, base frame [m]
+  double arm_angle_rad = 0.0;       ///< LWR: the arm angle psi every location is sent with
   /// UR: the joints the arm stands at before the first location. LWR: the home posture the
   /// analytic IK ranks its configurations by (see aik_order.hpp) [rad].
   kinematics::JointVector home_q_rad;
-  double sigma_rep_spec_m = 0.0;          ///< manufacturer's repeatability, for sigma_noise (Eq. 9)
-  TestbedErrorModel default_errors;       ///< calibrated defaults
+  double sigma_rep_spec_m = 0.0;     ///< manufacturer's repeatability, for sigma_noise (Eq. 9)
+  TestbedErrorModel default_errors;  ///< calibrated defaults
 };
 
 /// The UR5 test bed: 250 x 300 x 200 mm volume 2.1 m from the tracker, K = 12.

@@ -27,7 +27,8 @@ struct TrackerModel {
 
 /// T_robot_sensor of the tracker: sensor origin at distance_m from `volume_centre_robot_m` in
 /// the model's direction, sensor z axis looking at the centre, sensor x axis horizontal.
-RigidTransform tracker_pose(const TrackerModel& model, const Eigen::Vector3d& volume_centre_robot_m);
+RigidTransform tracker_pose(const TrackerModel& model,
+                            const Eigen::Vector3d& volume_centre_robot_m);
 
 /// One reading of point `p_robot_m` [m, robot frame]: T_sensor_robot p plus per-axis noise [m].
 Eigen::Vector3d tracker_reading(const RigidTransform& T_sensor_robot,
