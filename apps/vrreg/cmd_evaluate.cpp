@@ -1,5 +1,6 @@
 // vrreg evaluate: the true accuracy of a registration on independent targets: TRE and RMS_T
-// uncorrected and RRBC-corrected (Eq. 3, 4, 7, 8), gamma, N_bad and Delta TRE (section 5.1).
+// uncorrected and RRBC-corrected (Eq. 3, 4, 7, 8), gamma, N_bad and Delta TRE (section 5.1),
+// following the model's Procedure 2 strategy (section 4.4, strategy_cli.hpp).
 #include <cstdio>
 #include <sstream>
 

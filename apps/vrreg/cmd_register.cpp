@@ -1,5 +1,6 @@
 // vrreg register: rigid registration of fiducials (Eq. 2), the rigid-body condition (Eq. 1),
-// noise (Eq. 9) and the RRBC fiducial corrections (Eq. 6), saved as a model for evaluate/correct.
+// noise (Eq. 9) and the RRBC fiducial corrections (Eq. 6), saved as a model for evaluate/correct;
+// with --strategy, Procedure 2's handling of arm configurations (section 4.4, strategy_cli.hpp).
 #include <cstdio>
 #include <iostream>
 
@@ -96,6 +97,10 @@ Registered register_rows(const MeasurementSet& set, const RegisterArgs& args) {
 
 // Strategy 3: one registration from the volume corners, corrections for every configuration.
 Registered register_volume(const MeasurementSet& set, const RegisterArgs& args) {
+  const std::string& method = args.interpolation.method;
+  VRREG_THROW_UNLESS(method.empty() || method == "octuplet",
+                     "--strategy 3 corrects with octuplets (--cube-mm), not --interpolation "
+                         << method);
   RegistrationOptions reg_options;
   reg_options.estimate_scale = args.scale;
   Strategy3Model s3 = build_strategy3_model(

@@ -25,16 +25,18 @@ const char* const kStrategyHelp =
     "                corrected from the 8 fiducials of the cube around it (--cube-mm), each taken\n"
     "                in the configuration whose joints are nearest the target's. The model keeps\n"
     "                every configuration; evaluate --config N picks the targets measured in N.\n"
-    "  --joint-norm  l2 (the paper's, default) or linf; angles are wrapped to (-pi, pi].";
+    "  --joint-norm  l2 (the paper's, default) or linf; angles are wrapped to (-pi, pi].\n";
 
 void StrategyFlags::add_to(CLI::App& command, bool for_register) {
-  command.add_option("--strategy", strategy,
-                     for_register ? "Procedure 2 strategy 1, 2 or 3 (see below)"
-                                  : "Procedure 2 strategy (default: the model's; see below)")
+  command
+      .add_option("--strategy", strategy,
+                  for_register ? "Procedure 2 strategy 1, 2 or 3 (see below)"
+                               : "Procedure 2 strategy (default: the model's; see below)")
       ->check(CLI::Range(1, 3));
-  command.add_option("--joint-norm", joint_norm,
-                     for_register ? "joint-space distance of strategies 2 and 3: l2 (default) or linf"
-                                  : "strategy 3: joint-space distance (default: the model's)")
+  command
+      .add_option("--joint-norm", joint_norm,
+                  for_register ? "joint-space distance of strategies 2 and 3: l2 (default) or linf"
+                               : "strategy 3: joint-space distance (default: the model's)")
       ->check(CLI::IsMember({"l2", "linf"}));
   if (for_register) {
     command.add_option("--seed", seed,
@@ -60,8 +62,9 @@ int register_strategy(const StrategyFlags& flags, const std::optional<int>& conf
   const int s = flags.strategy.value_or(0);
   VRREG_THROW_UNLESS((s != 1 && s != 2) || config,
                      "--strategy " << s << " registers one configuration: give --config N");
-  VRREG_THROW_UNLESS(s != 3 || !config, "--strategy 3 registers every configuration at once; "
-                                        "--config N selects targets in evaluate");
+  VRREG_THROW_UNLESS(s != 3 || !config,
+                     "--strategy 3 registers every configuration at once; "
+                     "--config N selects targets in evaluate");
   VRREG_THROW_UNLESS(s != 3 || !robust, "--robust is not available with --strategy 3");
   VRREG_THROW_UNLESS(s == 3 || !flags.seed, "--seed is for --strategy 3");
   VRREG_THROW_UNLESS(s >= 2 || flags.joint_norm.empty(), "--joint-norm is for --strategy 2 or 3");
@@ -73,11 +76,11 @@ int evaluate_strategy(const StrategyFlags& flags, const RegistrationModel& model
   const int built = model.procedure2.strategy;
   const int s = flags.strategy.value_or(built);
   if (s != built && !(s == 1 && built == 0)) {
-    throw io::FileError(model_path, 0,
-                        "the model was built with " +
-                            (built == 0 ? std::string("no strategy")
-                                        : "--strategy " + std::to_string(built)) +
-                            ", not --strategy " + std::to_string(s) + ": register again with it");
+    throw io::FileError(
+        model_path, 0,
+        "the model was built with " +
+            (built == 0 ? std::string("no strategy") : "--strategy " + std::to_string(built)) +
+            ", not --strategy " + std::to_string(s) + ": register again with it");
   }
   VRREG_THROW_UNLESS(s >= 2 || flags.joint_norm.empty(), "--joint-norm is for strategies 2 and 3");
   if (s == 2 && !flags.joint_norm.empty() && flags.joint_norm != model.procedure2.joint_norm) {
@@ -112,7 +115,8 @@ Strategy3Model build_strategy3_model(const MeasurementSet& set, std::uint64_t se
   require_configurations(set, 3);
   Strategy3Model out;
   RegistrationModel& model = out.model;
-  for (const std::size_t i : set.select(Role::kFiducial)) model.fiducials.push_back(set.locations[i]);
+  for (const std::size_t i : set.select(Role::kFiducial))
+    model.fiducials.push_back(set.locations[i]);
   planning::Strategy3Options options;
   options.seed = seed;
   options.match_tolerance_m = interpolation.match_tolerance_m;
@@ -148,10 +152,12 @@ TargetCorrection correct_strategy3(const RegistrationModel& model, const Measure
                                    const InterpolationSettings& settings,
                                    kinematics::JointNorm norm) {
   require_configurations(set, 3);
-  VRREG_THROW_UNLESS(settings.method == InterpolationMethod::kOctuplet ||
-                         settings.method == InterpolationMethod::kAuto,
-                     "--strategy 3 corrects with octuplets, not --interpolation "
-                         << to_string(settings.method));
+  if (settings.method != InterpolationMethod::kOctuplet &&
+      settings.method != InterpolationMethod::kAuto) {
+    throw io::FileError(set.source, 0,
+                        std::string("--strategy 3 corrects with octuplets, not --interpolation ") +
+                            to_string(settings.method));
+  }
   planning::Strategy3CorrectionOptions options;
   options.cube_edge_m = settings.cube_edge_m;
   options.match_tolerance_m = settings.match_tolerance_m;
@@ -207,15 +213,17 @@ void print_strategy(const RegistrationModel& model,
     }
     std::printf("\n");
   } else if (p.strategy == 3) {
-    std::printf("  strategy 3                    one registration from the volume corners, seed %llu:\n",
-                static_cast<unsigned long long>(p.seed.value_or(0)));
+    std::printf(
+        "  strategy 3                    one registration from the volume corners, seed %llu:\n",
+        static_cast<unsigned long long>(p.seed.value_or(0)));
     std::printf("                               ");
     for (const std::size_t f : p.registration_fiducials) {
       std::printf(" %s", location_name(model.fiducials[f]).c_str());
     }
-    std::printf("\n  corrections for               %zu fiducials in every configuration "
-                "(nearest to each target's by %s)\n",
-                model.fiducials.size(), p.joint_norm.c_str());
+    std::printf(
+        "\n  corrections for               %zu fiducials in every configuration "
+        "(nearest to each target's by %s)\n",
+        model.fiducials.size(), p.joint_norm.c_str());
   }
 }
 

@@ -1,13 +1,12 @@
 #pragma once
 // Procedure 2 (paper section 4.4) on the command line: the --strategy, --joint-norm and --seed
 // flags of register and evaluate, and the glue from files to the planning library.
+#include <CLI/CLI.hpp>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/core/model.hpp"
@@ -29,7 +28,7 @@ struct StrategyFlags {
 
 /// What register --strategy 3 builds: the model and its registration from the volume corners.
 struct Strategy3Model {
-  RegistrationModel model;          ///< all fiducials in all configurations, epsilon vs one {R, tau}
+  RegistrationModel model;  ///< all fiducials in all configurations, epsilon vs one {R, tau}
   RegistrationResult registration;  ///< from the 8 volume-corner fiducials
   Points3 registered_sensor_m;      ///< those 8 fiducials, sensor frame [m]
   Points3 registered_robot_m;       ///< and robot frame [m]

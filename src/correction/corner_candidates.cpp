@@ -52,8 +52,8 @@ CornerFiducials CornerCandidates::octuplet(const Eigen::Vector3d& target_robot_n
   const Eigen::Vector3d half = Eigen::Vector3d::Constant(0.5 * cube_edge_m);
   CornerFiducials out;
   for (std::size_t corner = 0; corner < 8; ++corner) {
-    out[corner] = at(corner_offset(corner, target_robot_nominal_m - half,
-                                   target_robot_nominal_m + half));
+    out[corner] =
+        at(corner_offset(corner, target_robot_nominal_m - half, target_robot_nominal_m + half));
   }
   return out;
 }

@@ -18,7 +18,8 @@ void check_point(const PointConfigurations& point, std::size_t p, Eigen::Index n
   VRREG_THROW_UNLESS(point.q_rad.rows() == n_joints && n_joints > 0,
                      "Strategy 2: point " << p << " has " << point.q_rad.rows()
                                           << " joints, point 0 has " << n_joints);
-  VRREG_THROW_UNLESS(point.q_rad.allFinite(), "Strategy 2: point " << p << " has non-finite joints");
+  VRREG_THROW_UNLESS(point.q_rad.allFinite(),
+                     "Strategy 2: point " << p << " has non-finite joints");
   const std::set<int> distinct(point.labels.begin(), point.labels.end());
   VRREG_THROW_UNLESS(distinct.size() == point.labels.size(),
                      "Strategy 2: point " << p << " lists a configuration label twice");
@@ -39,13 +40,14 @@ std::vector<int> label_order(const PointConfigurations& point) {
 JointNorm parse_joint_norm(std::string_view name) {
   if (name == "l2") return JointNorm::kL2;
   if (name == "linf") return JointNorm::kLinf;
-  VRREG_THROW_UNLESS(false, "unknown joint norm '" << std::string(name) << "' (expected l2 or linf)");
+  VRREG_THROW_UNLESS(false,
+                     "unknown joint norm '" << std::string(name) << "' (expected l2 or linf)");
 }
 
 double PathRelabelling::switched_fraction() const {
-  return n_configurations == 0 ? 0.0
-                               : static_cast<double>(n_switched) /
-                                     static_cast<double>(n_configurations);
+  return n_configurations == 0
+             ? 0.0
+             : static_cast<double>(n_switched) / static_cast<double>(n_configurations);
 }
 
 PathRelabelling relabel_along_path(const std::vector<PointConfigurations>& path, JointNorm norm) {

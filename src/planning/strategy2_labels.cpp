@@ -24,8 +24,8 @@ Strategy2Result relabel_strategy2(const MeasurementSet& set, kinematics::JointNo
   std::vector<std::vector<std::size_t>> members;
   for (std::size_t i = 0; i < set.locations.size(); ++i) {
     const Location& loc = set.locations[i];
-    VRREG_THROW_UNLESS(loc.config.has_value(), "Strategy 2: point '" << loc.point
-                                                                     << "' has a row without config");
+    VRREG_THROW_UNLESS(loc.config.has_value(),
+                       "Strategy 2: point '" << loc.point << "' has a row without config");
     VRREG_THROW_UNLESS(loc.q_rad.size() == static_cast<std::size_t>(set.n_joints),
                        "Strategy 2: point '" << loc.point << "' config " << *loc.config << " has "
                                              << loc.q_rad.size() << " joints, expected "

@@ -1,5 +1,6 @@
 #include "vrreg/planning/strategy3_correction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -35,9 +36,9 @@ Eigen::Index nearest_candidate(const std::vector<Location>& fiducials,
 }  // namespace
 
 void Strategy3CorrectionOptions::validate() const {
-  VRREG_THROW_UNLESS(std::isfinite(match_tolerance_m) && match_tolerance_m > 0.0,
-                     "Strategy 3: the match tolerance must be > 0, got " << match_tolerance_m
-                                                                         << " m");
+  VRREG_THROW_UNLESS(
+      std::isfinite(match_tolerance_m) && match_tolerance_m > 0.0,
+      "Strategy 3: the match tolerance must be > 0, got " << match_tolerance_m << " m");
   VRREG_THROW_UNLESS(std::isfinite(cube_edge_m) && cube_edge_m > 4.0 * match_tolerance_m,
                      "Strategy 3 corrects with octuplets and needs a cube edge (got "
                          << units::m_to_mm(cube_edge_m) << " mm): set --cube-mm");
@@ -60,17 +61,17 @@ std::vector<Stencil> nearest_configuration_stencils(const std::vector<Location>&
                                                   << "' has no joints (q1_rad..qN_rad)");
     const CornerFiducials corners = candidates.octuplet(target.robot_m, options.cube_edge_m);
     Stencil& s = out[t];
-    s.status = StencilStatus::kOk;
-    for (std::size_t c = 0; c < 8 && s.status == StencilStatus::kOk; ++c) {
-      if (corners[c].empty()) {
-        s = Stencil{.fiducial = {}, .weight = {}, .size = 0,
-                    .status = StencilStatus::kMissingCorner};
-        break;
-      }
+    const bool complete =
+        std::none_of(corners.begin(), corners.end(), [](const auto& c) { return c.empty(); });
+    if (!complete) {
+      s.status = StencilStatus::kMissingCorner;
+      continue;
+    }
+    for (std::size_t c = 0; c < 8; ++c) {
       s.fiducial[c] = nearest_candidate(fiducials, corners[c], target, options.norm);
       s.weight[c] = 0.125;
-      s.size = static_cast<int>(c) + 1;
     }
+    s.size = 8;
   }
   return out;
 }

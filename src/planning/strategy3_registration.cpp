@@ -11,18 +11,19 @@
 namespace vrreg::planning {
 
 void Strategy3Options::validate() const {
-  VRREG_THROW_UNLESS(std::isfinite(match_tolerance_m) && match_tolerance_m > 0.0,
-                     "Strategy 3: the match tolerance must be > 0, got " << match_tolerance_m
-                                                                         << " m");
+  VRREG_THROW_UNLESS(
+      std::isfinite(match_tolerance_m) && match_tolerance_m > 0.0,
+      "Strategy 3: the match tolerance must be > 0, got " << match_tolerance_m << " m");
   registration.validate();
 }
 
 Strategy3Registration register_volume_corners(const std::vector<Location>& fiducials,
                                               const Strategy3Options& options) {
   options.validate();
-  VRREG_THROW_UNLESS(fiducials.size() >= 8, "Strategy 3 needs fiducials at the 8 corners of the "
-                                            "work volume, got " << fiducials.size()
-                                                                << " fiducials");
+  VRREG_THROW_UNLESS(fiducials.size() >= 8,
+                     "Strategy 3 needs fiducials at the 8 corners of the "
+                     "work volume, got "
+                         << fiducials.size() << " fiducials");
   Points3 robot(3, static_cast<Eigen::Index>(fiducials.size()));
   Points3 sensor(3, robot.cols());
   for (std::size_t j = 0; j < fiducials.size(); ++j) {
@@ -48,8 +49,7 @@ Strategy3Registration register_volume_corners(const std::vector<Location>& fiduc
     corner_sensor.col(static_cast<Eigen::Index>(c)) = sensor.col(j);
   }
   out.registration = register_rigid(corner_sensor, corner_robot, options.registration);
-  out.corrections_sensor_m =
-      fiducial_corrections(out.registration.T_robot_sensor, sensor, robot);
+  out.corrections_sensor_m = fiducial_corrections(out.registration.T_robot_sensor, sensor, robot);
   return out;
 }
 

@@ -1,8 +1,9 @@
 // Corner look-up with several arm configurations per nominal position (Strategy 3, section 4.4).
+#include "vrreg/correction/corner_candidates.hpp"
+
 #include <gtest/gtest.h>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/correction/corner_candidates.hpp"
 
 namespace vrreg {
 namespace {

@@ -37,7 +37,8 @@ double per_label_cor_rms_t(const MeasurementSet& set, int config) {
   const std::vector<std::size_t> fid = set.select(Role::kFiducial, config);
   const std::vector<std::size_t> tgt = set.select(Role::kTarget, config);
   RegistrationModel model;
-  model.T_robot_sensor = register_rigid(set.sensor_points(fid), set.robot_points(fid)).T_robot_sensor;
+  model.T_robot_sensor =
+      register_rigid(set.sensor_points(fid), set.robot_points(fid)).T_robot_sensor;
   model.fiducials = pick(set, fid);
   model.corrections_sensor_m =
       fiducial_corrections(model.T_robot_sensor, set.sensor_points(fid), set.robot_points(fid));
@@ -57,7 +58,8 @@ double strategy3_cor_rms_t(const MeasurementSet& set, int config, std::uint64_t 
   options.seed = seed;
   RegistrationModel model;
   model.fiducials = pick(set, fid);
-  const planning::Strategy3Registration r = planning::register_volume_corners(model.fiducials, options);
+  const planning::Strategy3Registration r =
+      planning::register_volume_corners(model.fiducials, options);
   model.T_robot_sensor = r.registration.T_robot_sensor;
   model.corrections_sensor_m = r.corrections_sensor_m;
   planning::Strategy3CorrectionOptions correction;
@@ -75,11 +77,12 @@ TEST(Procedure2, Strategy2SwitchesTheSwappedRegionOnly) {
   EXPECT_DOUBLE_EQ(r.summary.switched_fraction(), 0.6);
   EXPECT_EQ(r.summary.switched_by_file_label, (std::map<int, int>{{1, 75}, {2, 75}}));
   for (const Location& loc : r.set.locations) {  // label 1 is arm A everywhere
-    const bool arm_b = testing::two_arm_joints(loc.robot_m * 1000.0, true).isApprox(
-        Eigen::Map<const Eigen::VectorXd>(loc.q_rad.data(), 7), 1e-9);
+    const bool arm_b = testing::two_arm_joints(loc.robot_m * 1000.0, true)
+                           .isApprox(Eigen::Map<const Eigen::VectorXd>(loc.q_rad.data(), 7), 1e-9);
     EXPECT_EQ(*loc.config, arm_b ? 2 : 1) << loc.point;
   }
-  const planning::Strategy2Result linf = planning::relabel_strategy2(cell(), kinematics::JointNorm::kLinf);
+  const planning::Strategy2Result linf =
+      planning::relabel_strategy2(cell(), kinematics::JointNorm::kLinf);
   EXPECT_EQ(linf.summary.n_switched, 150);
 }
 

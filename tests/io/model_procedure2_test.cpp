@@ -68,11 +68,13 @@ TEST(ModelProcedure2, BrokenBlockNamesTheKey) {
                                 "m.json", 0, "procedure2.strategy"));
   EXPECT_TRUE(throws_file_error([&] { parse_model_json(broken("joint_norm", "l1"), "m.json"); },
                                 "m.json", 0, "procedure2.joint_norm"));
-  EXPECT_TRUE(throws_file_error([&] { parse_model_json(broken("seed", -1), "m.json"); },
-                                "m.json", 0, "procedure2.seed"));
+  EXPECT_TRUE(throws_file_error([&] { parse_model_json(broken("seed", -1), "m.json"); }, "m.json",
+                                0, "procedure2.seed"));
   EXPECT_TRUE(throws_file_error(
-      [&] { parse_model_json(broken("registration_fiducials", {0, 3}), "m.json"); }, "m.json", 0,
-      "procedure2.registration_fiducials"));
+      [&] {
+        parse_model_json(broken("registration_fiducials", {0, 3}), "m.json");
+      },
+      "m.json", 0, "procedure2.registration_fiducials"));
   m.procedure2.registration_fiducials = {5};
   EXPECT_THROW(format_model_json(m), InputError);
 }

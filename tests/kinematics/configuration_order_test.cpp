@@ -1,12 +1,13 @@
 // Strategy 2 of Procedure 2 (paper section 4.4): relabelling along a hand-made path with known
 // switches, the norm's effect on the choice, angle wrapping, and bad input.
+#include "vrreg/kinematics/configuration_order.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/kinematics/configuration_order.hpp"
 
 namespace vrreg::kinematics {
 namespace {
@@ -17,9 +18,12 @@ using Vec = Eigen::Matrix<double, 4, 1>;
 Vec arm(char which, int point) {
   const double drift = 0.02 * point;  // small motion from point to point
   switch (which) {
-    case 'A': return Vec(0.1 + drift, 0.2, 0.3, 0.4);
-    case 'B': return Vec(0.1 + drift, 0.2, 1.3, 0.4);  // 1 rad from A
-    default: return Vec(2.1 + drift, 0.2, 0.3, -1.6);  // ~2.8 rad from A
+    case 'A':
+      return Vec(0.1 + drift, 0.2, 0.3, 0.4);
+    case 'B':
+      return Vec(0.1 + drift, 0.2, 1.3, 0.4);  // 1 rad from A
+    default:
+      return Vec(2.1 + drift, 0.2, 0.3, -1.6);  // ~2.8 rad from A
   }
 }
 

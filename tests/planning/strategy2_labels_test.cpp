@@ -1,9 +1,10 @@
 // Strategy 2 (paper section 4.4) on a measurement set: the visiting path is the order of first
 // appearance of the points, every location of a point is one of its configurations.
+#include "vrreg/planning/strategy2_labels.hpp"
+
 #include <gtest/gtest.h>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/planning/strategy2_labels.hpp"
 
 namespace vrreg::planning {
 namespace {
@@ -29,7 +30,7 @@ MeasurementSet set_with_swaps() {
   set.locations = {
       location("P1", Role::kFiducial, 1, near0), location("P1", Role::kFiducial, 2, far0),
       location("P2", Role::kTarget, 1, far1),    location("P3", Role::kFiducial, 1, near1),
-      location("P2", Role::kTarget, 2, near1),   // P2's second row comes after P3's first
+      location("P2", Role::kTarget, 2, near1),  // P2's second row comes after P3's first
       location("P3", Role::kFiducial, 2, far1),
   };
   return set;

@@ -64,8 +64,8 @@ Location target(std::vector<double> q) {
 std::vector<int> chosen_configs(const Stencil& s, const std::vector<Location>& fiducials) {
   std::vector<int> out;
   for (int k = 0; k < s.size; ++k) {
-    out.push_back(*fiducials[static_cast<std::size_t>(s.fiducial[static_cast<std::size_t>(k)])]
-                       .config);
+    out.push_back(
+        *fiducials[static_cast<std::size_t>(s.fiducial[static_cast<std::size_t>(k)])].config);
   }
   return out;
 }
@@ -114,8 +114,8 @@ struct TwoArmGrid {
 Eigen::Vector3d arm_error_m(const Eigen::Vector3d& p, int arm) {
   Eigen::Matrix3d A;
   A << 1e-3, 2e-3, 0, 0, -1e-3, 1e-3, 2e-3, 0, 1e-3;
-  return arm == 1 ? Eigen::Vector3d(A * p) : Eigen::Vector3d(-2.0 * A.transpose() * p) +
-                                                 Eigen::Vector3d(4e-4, -3e-4, 5e-4);
+  return arm == 1 ? Eigen::Vector3d(A * p)
+                  : Eigen::Vector3d(-2.0 * A.transpose() * p) + Eigen::Vector3d(4e-4, -3e-4, 5e-4);
 }
 
 TwoArmGrid two_arm_grid() {
@@ -180,14 +180,16 @@ TEST(Strategy3Correction, ExactWhenEveryCornerIsInTheTargetsArm) {
   const TargetCorrection c = correct_targets_strategy3(model, g.targets, options);
   ASSERT_EQ(c.n_flagged, 0);
   Points3 targets_robot(3, 2);
-  for (std::size_t t = 0; t < 2; ++t) targets_robot.col(static_cast<Eigen::Index>(t)) = g.targets[t].robot_m;
+  for (std::size_t t = 0; t < 2; ++t)
+    targets_robot.col(static_cast<Eigen::Index>(t)) = g.targets[t].robot_m;
   const Eigen::VectorXd unc = point_errors(c.uncorrected_robot_m, targets_robot);
   const Eigen::VectorXd cor = point_errors(c.corrected_robot_m, targets_robot);
   EXPECT_GT(unc.minCoeff(), 1e-4);
   EXPECT_LT(cor.maxCoeff(), 1e-10);
   for (std::size_t t = 0; t < 2; ++t) {
     for (int k = 0; k < 8; ++k) {
-      const Location& f = g.fiducials[static_cast<std::size_t>(c.stencils[t].fiducial[static_cast<std::size_t>(k)])];
+      const Location& f = g.fiducials[static_cast<std::size_t>(
+          c.stencils[t].fiducial[static_cast<std::size_t>(k)])];
       EXPECT_EQ(f.config, g.targets[t].config);
     }
   }

@@ -5,12 +5,11 @@
 // cubes of fiducials). The file lists the arms as labels 1, 2 for x < 40 mm and 2, 1 from there
 // on (an IK that changes its order), so Strategy 1's label 1 mixes arms; Strategy 2 should switch
 // every location with x >= 40 mm (3/5 of them).
+#include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
 #include <sstream>
 #include <string>
-
-#include <Eigen/Geometry>
 
 #include "vrreg/core/random.hpp"
 
@@ -18,9 +17,9 @@ namespace vrreg::testing {
 
 struct TwoArmCellOptions {
   std::uint64_t seed = 5;
-  double noise_mm = 0.005;     ///< sensor noise per axis
-  bool with_joints = true;     ///< write q1_rad..q7_rad
-  bool with_config = true;     ///< write the config column
+  double noise_mm = 0.005;  ///< sensor noise per axis
+  bool with_joints = true;  ///< write q1_rad..q7_rad
+  bool with_config = true;  ///< write the config column
   double spacing_mm = 20.0;
 };
 
@@ -44,7 +43,8 @@ inline Eigen::Matrix<double, 7, 1> two_arm_joints(const Eigen::Vector3d& p_mm, b
 
 /// Robot-frame error [mm] of arm `b` at nominal position p [mm]: smooth per arm, arms differ.
 inline Eigen::Vector3d two_arm_error_mm(const Eigen::Vector3d& p, bool b) {
-  if (!b) return 0.2 * Eigen::Vector3d(std::sin(p.x() / 30), std::cos(p.y() / 40), std::sin(p.z() / 50));
+  if (!b)
+    return 0.2 * Eigen::Vector3d(std::sin(p.x() / 30), std::cos(p.y() / 40), std::sin(p.z() / 50));
   return Eigen::Vector3d(0.6, -0.4, 0.5) +
          0.3 * Eigen::Vector3d(std::cos(p.x() / 25), std::sin(p.z() / 30), std::cos(p.y() / 35));
 }
@@ -73,8 +73,8 @@ inline std::string two_arm_cell_csv(const TwoArmCellOptions& o = {}) {
           const bool arm_b = (label == 2) != (i >= 2);  // labels swap from x = 40 mm on
           const Eigen::Vector3d s =
               R * (p + two_arm_error_mm(p, arm_b)) + t_mm + rng.normal3(o.noise_mm);
-          out << name << ',' << (target ? "target" : "fiducial") << ',' << p.x() << ','
-              << p.y() << ',' << p.z() << ',' << s.x() << ',' << s.y() << ',' << s.z();
+          out << name << ',' << (target ? "target" : "fiducial") << ',' << p.x() << ',' << p.y()
+              << ',' << p.z() << ',' << s.x() << ',' << s.y() << ',' << s.z();
           if (o.with_config) out << ',' << label;
           if (o.with_joints) {
             const auto q = two_arm_joints(p, arm_b);

@@ -1,11 +1,11 @@
 #pragma once
 // Strategy 2 of Procedure 2 (paper section 4.4): relabel the arm configurations of the nominal
 // points along the visiting path, so that one label means a similar arm from point to point.
-// Plain joint matrices and integer labels; MeasurementSet-level use is in planning/strategy2_labels.
+// Plain joint matrices and integer labels; MeasurementSet-level use is in
+// planning/strategy2_labels.
+#include <Eigen/Core>
 #include <string_view>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vrreg/kinematics/joint_distance.hpp"
 

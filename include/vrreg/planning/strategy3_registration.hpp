@@ -13,7 +13,7 @@ namespace vrreg::planning {
 
 /// Options of register_volume_corners.
 struct Strategy3Options {
-  std::uint64_t seed = 1;           ///< seeds vrreg::Random, which picks each corner's configuration
+  std::uint64_t seed = 1;  ///< seeds vrreg::Random, which picks each corner's configuration
   double match_tolerance_m = 1e-6;  ///< how far a fiducial may be from a corner position [m]
   RegistrationOptions registration;
   /// Throws InputError on a tolerance that is not > 0 or on bad registration options.
