@@ -6,6 +6,7 @@
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
+#include "vrreg/io/file_error.hpp"
 
 namespace vrreg::cli {
 
@@ -48,15 +49,26 @@ InterpolationSettings InterpolationFlags::apply(InterpolationSettings stored) co
 std::vector<std::size_t> select_rows(const MeasurementSet& set, Role role,
                                      std::optional<int> config) {
   std::vector<std::size_t> rows = set.select(role, config);
-  const char* what = role == Role::kFiducial ? "fiducial" : "target";
-  if (config) {
-    VRREG_THROW_UNLESS(set.has_config, set.source << ": --config " << *config
-                                                  << " given but the file has no config column");
-    VRREG_THROW_UNLESS(!rows.empty(),
-                       set.source << ": no " << what << " rows with config " << *config);
+  const std::string what = role == Role::kFiducial ? "fiducial" : "target";
+  // FileError: the message names the file once, and the commands pass it on unchanged.
+  if (config && !set.has_config) {
+    throw io::FileError(set.source, 0,
+                        "--config " + std::to_string(*config) + " given but the file has no config column");
   }
-  VRREG_THROW_UNLESS(!rows.empty(), set.source << ": no " << what << " rows");
+  if (rows.empty()) {
+    throw io::FileError(set.source, 0,
+                        "no " + what + " rows" +
+                            (config ? " with config " + std::to_string(*config) : std::string()));
+  }
   return rows;
+}
+
+std::vector<std::size_t> source_lines(const MeasurementSet& set,
+                                      const std::vector<std::size_t>& rows) {
+  std::vector<std::size_t> lines;
+  lines.reserve(rows.size());
+  for (std::size_t i : rows) lines.push_back(set.locations[i].source_line);
+  return lines;
 }
 
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }

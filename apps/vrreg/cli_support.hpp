@@ -32,6 +32,10 @@ struct InterpolationFlags {
 std::vector<std::size_t> select_rows(const MeasurementSet& set, Role role,
                                      std::optional<int> config);
 
+/// The file line of each selected row (its place in the visiting order).
+std::vector<std::size_t> source_lines(const MeasurementSet& set,
+                                      const std::vector<std::size_t>& rows);
+
 /// Prints JSON to stdout, two-space indented, with a final newline.
 void print_json(const nlohmann::json& j);
 

@@ -47,7 +47,8 @@ void run_correct(const CorrectArgs& args) {
   }
   const TargetCorrection c =
       strategy == 3 ? correct_strategy3(model, set, rows, settings, joint_norm({}, &model))
-                    : correct_targets(model, set.sensor_points(rows), nominal, settings);
+                    : correct_targets(model, set.sensor_points(rows), nominal, settings,
+                                      source_lines(set, rows));
 
   std::ostringstream out;
   out.precision(12);

@@ -72,7 +72,8 @@ void run_evaluate(const EvaluateArgs& args) {
   const TargetCorrection c =
       strategy == 3
           ? correct_strategy3(model, set, rows, settings, joint_norm(args.strategy, &model))
-          : correct_targets(model, targets_sensor, targets_robot, settings);
+          : correct_targets(model, targets_sensor, targets_robot, settings,
+                                      source_lines(set, rows));
   // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.
   const Eigen::VectorXd unc = point_errors(c.uncorrected_robot_m, targets_robot);
   const Eigen::VectorXd cor = point_errors(c.corrected_robot_m, targets_robot);

@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -55,7 +56,8 @@ void check_inputs(const RegistrationModel& model, const ConstPoints3Ref& targets
 TargetCorrection correct_targets(const RegistrationModel& model,
                                  const ConstPoints3Ref& targets_sensor_m,
                                  const ConstPoints3Ref& targets_robot_nominal_m,
-                                 const InterpolationSettings& settings) {
+                                 const InterpolationSettings& settings,
+                                 const std::vector<std::size_t>& targets_sequence) {
   check_inputs(model, targets_sensor_m, targets_robot_nominal_m, settings);
   const Eigen::Index n = targets_sensor_m.cols();
   const double tolerance_m = settings.match_tolerance_m;
@@ -86,7 +88,20 @@ TargetCorrection correct_targets(const RegistrationModel& model,
   if (method == InterpolationMethod::kOctuplet) {
     VRREG_THROW_UNLESS(targets_robot_nominal_m.cols() == n,
                        "octuplet interpolation needs the targets' nominal robot positions");
-    octuplet.emplace(fiducials_robot_m, settings.cube_edge_m, tolerance_m);
+    VRREG_THROW_UNLESS(targets_sequence.empty() ||
+                           targets_sequence.size() == static_cast<std::size_t>(n),
+                       "got " << targets_sequence.size() << " sequence numbers for " << n
+                              << " targets");
+    std::vector<std::size_t> fiducial_sequence;
+    const bool sequenced =
+        !targets_sequence.empty() &&
+        std::all_of(model.fiducials.begin(), model.fiducials.end(),
+                    [](const Location& f) { return f.source_line > 0; });
+    if (sequenced) {
+      for (const Location& f : model.fiducials) fiducial_sequence.push_back(f.source_line);
+    }
+    octuplet.emplace(fiducials_robot_m, settings.cube_edge_m, tolerance_m,
+                     std::move(fiducial_sequence));
     out.layout = octuplet->describe();
   } else if (method == InterpolationMethod::kScattered) {
     scattered.emplace(fiducials_robot_m, tolerance_m);
@@ -108,7 +123,9 @@ TargetCorrection correct_targets(const RegistrationModel& model,
       if (grid) {
         stencil = grid_stencil(*grid, registered_robot_m, tolerance_m);
       } else if (octuplet) {
-        stencil = octuplet->stencil(targets_robot_nominal_m.col(i));
+        stencil = octuplet->stencil(
+            targets_robot_nominal_m.col(i),
+            targets_sequence.empty() ? 0 : targets_sequence[static_cast<std::size_t>(i)]);
       } else {
         stencil = scattered->stencil(registered_robot_m);
       }

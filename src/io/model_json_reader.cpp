@@ -108,6 +108,11 @@ Location read_fiducial(const json& item, const std::string& path, const detail::
   loc.sensor_sq_dev_m2 = f.vector3(item, path, "sensor_sq_dev_mm2", kMmPerM * kMmPerM);
   if (loc.sensor_sq_dev_m2.minCoeff() < 0.0)
     f.fail(detail::join_path(path, "sensor_sq_dev_mm2"), "negative");
+  if (item.contains("line")) {
+    const int line = f.integer(item, path, "line");
+    if (line < 1) f.fail(detail::join_path(path, "line"), "must be at least 1");
+    loc.source_line = static_cast<std::size_t>(line);
+  }
   if (item.contains("q_rad")) loc.q_rad = f.numbers(item, path, "q_rad", -1);
   correction_m = f.vector3(item, path, "correction_mm", kMmPerM);
   return loc;

@@ -40,6 +40,7 @@ json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m) {
   out["robot_mm"] = mm_array(f.robot_m, "fiducial robot_mm");
   out["sensor_mm"] = mm_array(f.sensor_m, "fiducial sensor_mm");
   out["n_readings"] = f.n_readings;
+  if (f.source_line > 0) out["line"] = f.source_line;
   out["sensor_sq_dev_mm2"] = mm2_array(f.sensor_sq_dev_m2, "fiducial sensor_sq_dev_mm2");
   if (!f.q_rad.empty()) {
     json q = json::array();

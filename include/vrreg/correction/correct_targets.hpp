@@ -26,10 +26,13 @@ struct TargetCorrection {
 /// targets_sensor_m: measured targets [m]; targets_robot_nominal_m: their nominal robot positions
 /// [m] (needed by octuplet only; may have 0 columns otherwise). Throws InputError when the method
 /// cannot be used at all (e.g. grid on fiducials that hold no complete grid, octuplet without a
-/// cube edge, scattered on coplanar fiducials).
+/// cube edge, scattered on coplanar fiducials). targets_sequence: where each target was read (its
+/// file line), or empty; with it and the fiducials' source lines, octuplet accepts corners
+/// measured more than once and takes the reading nearest the target's.
 TargetCorrection correct_targets(const RegistrationModel& model,
                                  const ConstPoints3Ref& targets_sensor_m,
                                  const ConstPoints3Ref& targets_robot_nominal_m,
-                                 const InterpolationSettings& settings);
+                                 const InterpolationSettings& settings,
+                                 const std::vector<std::size_t>& targets_sequence = {});
 
 }  // namespace vrreg
