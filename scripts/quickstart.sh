@@ -9,8 +9,8 @@ scripts/build.sh release
 vrreg=build/release/bin/vrreg
 data=examples/data/example-cell.csv
 mkdir -p out
-echo "== vrreg register --fiducials $data -o out/model.json"
-"$vrreg" register --fiducials "$data" -o out/model.json
+echo "== vrreg register --fiducials $data --sigma-rep-mm 0.05 -o out/model.json"
+"$vrreg" register --fiducials "$data" --sigma-rep-mm 0.05 -o out/model.json
 echo
 echo "== vrreg evaluate --model out/model.json --targets $data"
 "$vrreg" evaluate --model out/model.json --targets "$data" --per-target out/per-target.csv

@@ -189,9 +189,10 @@ void run_register_unchecked(const RegisterArgs& args) {
                 args.sigma_rep_mm ? "" : ", not given: use --sigma-rep-mm");
   }
   if (rho_value) {
-    std::printf("  rho = sigma_L / sigma_noise   %.2f  %s\n", *rho_value,
+    std::printf("  rho = sigma_L / sigma_noise   %.2f  %s%s\n", *rho_value,
                 *rho_value > kRhoThreshold ? "(> 2.5: systematic error dominates, RRBC should help)"
-                                           : "(<= 2.5: noise dominates, RRBC is not expected to help)");
+                                           : "(<= 2.5: noise dominates, RRBC is not expected to help)",
+                args.sigma_rep_mm ? "" : "; an upper bound without --sigma-rep-mm");
   }
   std::printf("  spread (principal axes)       %s mm\n", mm3(reg.spread_m, 1).c_str());
   if (!rejected.empty()) {
