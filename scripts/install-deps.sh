@@ -1,13 +1,27 @@
 #!/usr/bin/env bash
-# Installs vrreg's build and test dependencies from Debian bookworm's packages.
+# Installs vrreg's build and test dependencies from Debian bookworm's packages, and the charting
+# library that `vrreg report` inlines (web/: `npm ci` from the npm registry, pinned by
+# web/package-lock.json). With --with-browser also Debian's Chromium, for the browser test.
 # Idempotent and quick when everything is already there.
 set -euo pipefail
+cd "$(dirname "$0")/.."
+with_browser=0
+for arg in "$@"; do
+  case "$arg" in
+    --with-browser) with_browser=1 ;;
+    *) echo "install-deps: unknown option $arg (use --with-browser)" >&2; exit 2 ;;
+  esac
+done
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libcli11-dev nlohmann-json3-dev libtbb-dev libnanoflann-dev libqhull-dev
   libyaml-cpp-dev liborocos-kdl-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
 )
+# Node.js and npm: the machine's own when there (any Node >= 18), else Debian's.
+if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
+if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
+if ((with_browser)); then packages+=(chromium); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -18,4 +32,14 @@ if ((${#missing[@]})); then
   if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# web/node_modules, reinstalled only when web/package-lock.json changed since the last `npm ci`.
+stamp=web/node_modules/.vrreg-package-lock.sha256
+want=$(sha256sum web/package-lock.json | cut -d' ' -f1)
+if [[ ! -f $stamp || $(cat "$stamp") != "$want" ||
+      ! -f web/node_modules/plotly.js-dist-min/plotly.min.js ]]; then
+  echo "install-deps: npm ci in web/ (Plotly for vrreg report, playwright-core for its test)" >&2
+  (cd web && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  echo "$want" > "$stamp"
 fi

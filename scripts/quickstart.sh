@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Quick start, command 1: install, build, run the main job.
-# The main job: register -> evaluate -> correct on the example cell that the repo ships
-# (examples/data/example-cell.csv, made by build/release/examples/example_01_make_example_cell).
+# Quick start, command 1: install, build, run the main jobs.
+# 1. register -> evaluate -> correct on the example cell that the repo ships
+#    (examples/data/example-cell.csv, made by build/release/examples/example_01_make_example_cell);
+# 2. vrreg reproduce: the paper's experiments on the simulated UR5 and KUKA test beds (one seed,
+#    about a second), Tables 1-2 and the Figure 7-8 data beside the paper's, figure data in
+#    out/reproduce/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -17,3 +20,6 @@ echo "== vrreg evaluate --model out/model.json --targets $data"
 echo
 echo "== vrreg correct --model out/model.json --points $data -o out/corrected.csv"
 "$vrreg" correct --model out/model.json --points "$data" -o out/corrected.csv
+echo
+echo "== vrreg reproduce --out out/reproduce"
+"$vrreg" reproduce --out out/reproduce

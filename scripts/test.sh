@@ -2,7 +2,7 @@
 # Quick start, command 2: install, build and run every test, optimised and under ASan + UBSan.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
+scripts/install-deps.sh --with-browser
 scripts/build.sh release
 ctest --preset release
 scripts/build.sh asan

@@ -1,13 +1,17 @@
 // vrreg simulate: the paper's datasets acquired on a simulated test bed (UR5: A1, A2, B; KUKA
-// LWR 4+: grid), written as a measurement CSV. Same seed, same bytes.
+// LWR 4+: grid), or a plan of `vrreg plan` measured on it (--plan), written as a measurement CSV.
+// Same seed, same bytes.
 #include <cstdio>
 #include <memory>
 
 #include "command_registry.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/io/error_model_file.hpp"
+#include "vrreg/io/file_error.hpp"
+#include "vrreg/io/plan_csv.hpp"
 #include "vrreg/io/simulation_csv.hpp"
 #include "vrreg/simulation/acquisition.hpp"
+#include "vrreg/simulation/plan_acquisition.hpp"
 
 namespace vrreg::cli {
 namespace {
@@ -19,7 +23,37 @@ struct SimulateArgs {
   std::string errors;
   std::string output;
   std::string write_errors;
+  std::string plan;
 };
+
+// The plan's rows as the robot program is told them; errors name the plan file.
+simulation::SimulatedDataset simulate_plan_file(const simulation::Testbed& testbed,
+                                                const std::string& path,
+                                                const simulation::SimulationOptions& options) {
+  const io::PlanFile plan = io::read_plan_csv(path);
+  if (plan.n_joints == 0) {
+    throw io::FileError(path, 0,
+                        "the plan has no joint columns (q1_rad..qN_rad): the simulated robot is "
+                        "sent joints; make the plan with 'vrreg plan --robot " +
+                            testbed.name + "'");
+  }
+  std::vector<simulation::CommandedLocation> commanded;
+  for (const io::PlanRow& row : plan.rows) {
+    simulation::CommandedLocation c;
+    c.point = row.point;
+    c.role = row.role;
+    c.robot_m = row.robot_m;
+    c.config = row.config;
+    c.q_rad = Eigen::Map<const Eigen::VectorXd>(row.q_rad.data(),
+                                                static_cast<Eigen::Index>(row.q_rad.size()));
+    commanded.push_back(std::move(c));
+  }
+  try {
+    return simulation::simulate_plan(testbed, commanded, options);
+  } catch (const InputError& e) {
+    throw io::FileError(path, 0, e.what());
+  }
+}
 
 void run_simulate(const SimulateArgs& args) {
   const simulation::Testbed testbed = simulation::testbed_by_name(args.testbed);
@@ -37,16 +71,25 @@ void run_simulate(const SimulateArgs& args) {
                        "simulate: nothing to do: give -o FILE.csv (and a DATASET)");
     return;
   }
-  VRREG_THROW_UNLESS(!args.dataset.empty(),
-                     "simulate: give a DATASET (ur5: A1, A2 or B; lwr4: grid)");
-  const simulation::Dataset dataset = simulation::parse_dataset(args.dataset);
-  simulation::check_dataset(testbed.kind, dataset);
-  const simulation::SimulatedDataset data = simulation::simulate_dataset(testbed, dataset, options);
+  VRREG_THROW_UNLESS(args.plan.empty() || args.dataset.empty(),
+                     "simulate: give a DATASET or --plan FILE, not both");
+  VRREG_THROW_UNLESS(!args.dataset.empty() || !args.plan.empty(),
+                     "simulate: give a DATASET (ur5: A1, A2 or B; lwr4: grid) or --plan FILE");
+  simulation::SimulatedDataset data;
+  if (!args.plan.empty()) {
+    data = simulate_plan_file(testbed, args.plan, options);
+  } else {
+    const simulation::Dataset dataset = simulation::parse_dataset(args.dataset);
+    simulation::check_dataset(testbed.kind, dataset);
+    data = simulation::simulate_dataset(testbed, dataset, options);
+  }
   io::write_simulated_dataset_csv(args.output, data);
   std::size_t targets = 0;
   for (const auto& location : data.locations) targets += location.role == Role::kTarget ? 1 : 0;
+  const std::string what =
+      args.plan.empty() ? simulation::to_string(data.dataset) : "plan " + args.plan;
   std::printf(
-      "simulated %s %s with seed %llu%s\n", testbed.name.c_str(), simulation::to_string(dataset),
+      "simulated %s %s with seed %llu%s\n", testbed.name.c_str(), what.c_str(),
       static_cast<unsigned long long>(args.seed),
       args.errors.empty() ? " (default errors)" : (" (errors from " + args.errors + ")").c_str());
   std::printf("  %zu locations (%zu fiducials, %zu targets), %zu visits, %zu readings\n",
@@ -60,9 +103,13 @@ void add_simulate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "simulate",
       "acquire one of the paper's datasets on a simulated test bed (ur5: A1, A2, B; "
-      "lwr4: grid) and write it as a measurement CSV");
+      "lwr4: grid), or measure a plan (--plan), and write it as a measurement CSV");
   cmd->add_option("TESTBED", args->testbed, "ur5 or lwr4")->required();
-  cmd->add_option("DATASET", args->dataset, "ur5: A1, A2 or B; lwr4: grid");
+  cmd->add_option("DATASET", args->dataset, "ur5: A1, A2 or B; lwr4: grid (or give --plan)");
+  cmd->add_option("--plan", args->plan,
+                  "measure this plan of 'vrreg plan --robot TESTBED' instead of a dataset: the "
+                  "robot takes its joints, the tracker reads each location K times; then "
+                  "'vrreg register' and 'vrreg evaluate --cube-mm SPACING' predict its accuracy");
   cmd->add_option("--seed", args->seed,
                   "draws the robot's errors and the noise; the same seed gives the same file")
       ->capture_default_str();

@@ -178,8 +178,14 @@ void add_strategy_json(nlohmann::json& j, const RegistrationModel& model,
   j["strategy"] = p.strategy == 0 ? nlohmann::json(nullptr) : nlohmann::json(p.strategy);
   if (p.strategy >= 2) j["joint_norm"] = p.joint_norm;
   if (relabelled) {
-    j["switched_fraction"] = relabelled->switched_fraction();
-    j["n_switched"] = relabelled->n_switched;
+    // switched_fraction is the paper's figure (section 5.2: "14 % of nominal locations"): the
+    // share of nominal points with any configuration relabelled.
+    j["switched_fraction"] = relabelled->switched_points_fraction();
+    j["switched_points_fraction"] = relabelled->switched_points_fraction();
+    j["n_switched_points"] = relabelled->n_switched_points;
+    j["n_points"] = relabelled->n_points;
+    j["switched_locations_fraction"] = relabelled->switched_locations_fraction();
+    j["n_switched_locations"] = relabelled->n_switched;
     j["n_locations"] = relabelled->n_locations;
   }
   if (p.strategy == 3) {
@@ -202,8 +208,10 @@ void print_strategy(const RegistrationModel& model,
     std::printf("  strategy 2                    labels along the visiting path (%s)",
                 p.joint_norm.c_str());
     if (relabelled) {
-      std::printf(": %d of %d locations (%.1f %%) switched", relabelled->n_switched,
-                  relabelled->n_locations, 100.0 * relabelled->switched_fraction());
+      std::printf(": %d of %d points (%.1f %%) and %d of %d locations (%.1f %%) switched",
+                  relabelled->n_switched_points, relabelled->n_points,
+                  100.0 * relabelled->switched_points_fraction(), relabelled->n_switched,
+                  relabelled->n_locations, 100.0 * relabelled->switched_locations_fraction());
       const char* sep = " (file label";
       for (const auto& [label, n] : relabelled->switched_by_file_label) {
         std::printf("%s %d: %d", sep, label, n);

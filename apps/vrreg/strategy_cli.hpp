@@ -60,8 +60,9 @@ TargetCorrection correct_strategy3(const RegistrationModel& model, const Measure
                                    const InterpolationSettings& settings,
                                    kinematics::JointNorm norm);
 
-/// Adds "strategy" (null without one) and, per strategy, "joint_norm", "switched_fraction",
-/// "n_switched" (2: from `relabelled`), "seed", "registration_fiducials" (3) to `j`.
+/// Adds "strategy" (null without one) and, per strategy, "joint_norm", "switched_fraction" (=
+/// "switched_points_fraction", the paper's), "switched_locations_fraction" and their counts (2:
+/// from `relabelled`), "seed", "registration_fiducials" (3) to `j`.
 void add_strategy_json(nlohmann::json& j, const RegistrationModel& model,
                        const std::optional<planning::Strategy2Summary>& relabelled);
 /// Prints the same as an indented table line (nothing without a strategy).

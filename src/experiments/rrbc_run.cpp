@@ -1,5 +1,8 @@
 #include "vrreg/experiments/rrbc_run.hpp"
 
+#include <cmath>
+
+#include "vrreg/core/check.hpp"
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/correction/rrbc.hpp"
 #include "vrreg/metrics/errors.hpp"
@@ -30,7 +33,11 @@ RrbcRunFigures run_rrbc(const MeasurementSet& set, const std::vector<std::size_t
   f.n_fiducials = static_cast<int>(fiducials.size());
   f.n_targets = static_cast<int>(targets.size());
   if (options.rigid_body_statistics) {
-    f.sigma_l_m = rigid_body_statistics(fid_sensor, fid_robot).sigma_l_m;
+    const RigidBodyStatistics stats = rigid_body_statistics(fid_sensor, fid_robot);
+    f.sigma_l_m = stats.sigma_l_m;
+    if (options.l_histogram_bin_m > 0.0) {
+      f.l_histogram = l_histogram(fid_sensor, fid_robot, options.l_histogram_bin_m, stats);
+    }
   }
   f.sigma_opt_m =
       options.sigma_opt_m ? *options.sigma_opt_m : sigma_opt_m(model.fiducials).value_or(0.0);
@@ -46,7 +53,20 @@ RrbcRunFigures run_rrbc(const MeasurementSet& set, const std::vector<std::size_t
   f.gamma = s.gamma;
   f.n_bad = s.n_bad;
   f.n_flagged = c.n_flagged;
+  f.unc_tre_m = unc;
+  f.cor_tre_m = cor;
   return f;
+}
+
+Histogram l_histogram(const ConstPoints3Ref& sensor_m, const ConstPoints3Ref& robot_m, double bin_m,
+                      const RigidBodyStatistics& range) {
+  VRREG_THROW_UNLESS(std::isfinite(bin_m) && bin_m > 0.0,
+                     "L histogram: bin width must be > 0, got " << bin_m << " m");
+  const double lo = std::floor(range.min_m / bin_m);
+  const double hi = std::floor(range.max_m / bin_m) + 1.0;
+  VRREG_THROW_UNLESS(hi - lo <= 1e6,
+                     "L histogram: " << hi - lo << " bins of " << bin_m << " m are too many");
+  return rigid_body_histogram(sensor_m, robot_m, static_cast<int>(hi - lo), lo * bin_m, hi * bin_m);
 }
 
 }  // namespace vrreg::experiments

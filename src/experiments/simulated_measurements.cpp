@@ -6,8 +6,7 @@ MeasurementSet to_measurement_set(const simulation::SimulatedDataset& data) {
   MeasurementSet set;
   set.source = data.testbed + " " + simulation::to_string(data.dataset) + " seed " +
                std::to_string(data.seed);
-  const bool lwr = data.dataset == simulation::Dataset::kGrid;
-  set.has_config = lwr;
+  set.has_config = data.has_config;
   set.has_repeat = true;
   set.locations.resize(data.visits.size());
   for (std::size_t v = 0; v < data.visits.size(); ++v) {
@@ -17,8 +16,9 @@ MeasurementSet to_measurement_set(const simulation::SimulatedDataset& data) {
     Location& loc = set.locations[v];
     loc.point = planned.point;
     loc.role = planned.role;
-    if (lwr) loc.config = visit.config;
+    if (data.has_config) loc.config = visit.config;
     loc.robot_m = planned.robot_m;
+    loc.source_line = v + 1;  // the visiting order, as a file's line order would give it
     loc.q_rad.assign(visit.q_rad.data(), visit.q_rad.data() + visit.q_rad.size());
     set.n_joints = static_cast<int>(visit.q_rad.size());
   }

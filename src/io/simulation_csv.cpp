@@ -73,7 +73,7 @@ void describe_robot(const simulation::SimulatedDataset& data, std::vector<std::s
 }  // namespace
 
 std::vector<Reading> simulated_readings(const simulation::SimulatedDataset& data) {
-  const bool lwr = data.dataset == simulation::Dataset::kGrid;
+  const bool with_config = data.has_config;
   std::vector<Reading> rows;
   rows.reserve(data.readings.size());
   for (const simulation::SimulatedReading& r : data.readings) {
@@ -85,7 +85,7 @@ std::vector<Reading> simulated_readings(const simulation::SimulatedDataset& data
     row.role = location.role;
     row.robot_m = location.robot_m;
     row.sensor_m = r.sensor_m;
-    if (lwr) row.config = visit.config;
+    if (with_config) row.config = visit.config;
     row.q_rad.assign(visit.q_rad.data(), visit.q_rad.data() + visit.q_rad.size());
     row.repeat = r.repeat;
     rows.push_back(std::move(row));
@@ -105,7 +105,9 @@ std::vector<std::string> simulated_dataset_comments(const simulation::SimulatedD
                 std::to_string(targets) + " targets), " + std::to_string(data.visits.size()) +
                 " visits, " + std::to_string(data.readings.size()) +
                 " readings; rows in visiting order");
-  if (lwr) {
+  if (data.dataset == simulation::Dataset::kPlan) {
+    out.push_back("a plan measured as written: commanded joints and config from the plan");
+  } else if (lwr) {
     out.push_back(
         "config = position (1..4) in the analytic IK's list, which ranks the four "
         "configurations by joint distance to the home posture (Strategy 1 order)");

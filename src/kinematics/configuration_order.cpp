@@ -44,7 +44,13 @@ JointNorm parse_joint_norm(std::string_view name) {
                      "unknown joint norm '" << std::string(name) << "' (expected l2 or linf)");
 }
 
-double PathRelabelling::switched_fraction() const {
+double PathRelabelling::switched_points_fraction() const {
+  return labels.empty()
+             ? 0.0
+             : static_cast<double>(n_switched_points) / static_cast<double>(labels.size());
+}
+
+double PathRelabelling::switched_locations_fraction() const {
   return n_configurations == 0
              ? 0.0
              : static_cast<double>(n_switched) / static_cast<double>(n_configurations);
@@ -77,11 +83,16 @@ PathRelabelling relabel_along_path(const std::vector<PointConfigurations>& path,
     ranked.insert(ranked.begin(), ref);
 
     std::vector<int> labels(point.labels.size());
+    bool point_switched = false;
     for (std::size_t r = 0; r < ranked.size(); ++r) {
       const auto column = static_cast<std::size_t>(listed[static_cast<std::size_t>(ranked[r])]);
       labels[column] = rank_label[r];
-      if (labels[column] != point.labels[column]) ++out.n_switched;
+      if (labels[column] != point.labels[column]) {
+        ++out.n_switched;
+        point_switched = true;
+      }
     }
+    if (point_switched) ++out.n_switched_points;
     out.n_configurations += static_cast<int>(labels.size());
     out.reference.push_back(listed[static_cast<std::size_t>(ref)]);
     out.labels.push_back(std::move(labels));

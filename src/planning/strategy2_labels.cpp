@@ -9,7 +9,12 @@
 
 namespace vrreg::planning {
 
-double Strategy2Summary::switched_fraction() const {
+double Strategy2Summary::switched_points_fraction() const {
+  return n_points == 0 ? 0.0
+                       : static_cast<double>(n_switched_points) / static_cast<double>(n_points);
+}
+
+double Strategy2Summary::switched_locations_fraction() const {
   return n_locations == 0 ? 0.0
                           : static_cast<double>(n_switched) / static_cast<double>(n_locations);
 }
@@ -51,6 +56,7 @@ Strategy2Result relabel_strategy2(const MeasurementSet& set, kinematics::JointNo
   out.summary.n_points = static_cast<int>(members.size());
   out.summary.n_locations = relabelled.n_configurations;
   out.summary.n_switched = relabelled.n_switched;
+  out.summary.n_switched_points = relabelled.n_switched_points;
   for (std::size_t p = 0; p < members.size(); ++p) {
     for (std::size_t k = 0; k < members[p].size(); ++k) {
       Location& loc = out.set.locations[members[p][k]];

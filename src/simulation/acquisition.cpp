@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "acquisition_detail.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/lwr_ik.hpp"
 #include "vrreg/kinematics/ur_ik.hpp"
@@ -75,12 +76,7 @@ SimulatedDataset simulate_dataset(const Testbed& testbed, Dataset dataset,
   data.errors = options.errors.value_or(testbed.default_errors);
   data.errors.validate(testbed.nominal.n_joints());
   data.sigma_rep_spec_m = testbed.sigma_rep_spec_m;
-
-  Random robot_rng = Random::stream(options.seed, kRobotStream);
-  data.robot = draw_robot_errors(data.errors.robot, testbed.nominal.n_joints(), robot_rng);
-  const SimulatedRobot robot(testbed.nominal, data.errors.robot, data.robot);
-  data.T_robot_sensor = tracker_pose(data.errors.tracker, testbed.volume_centre_m);
-  const RigidTransform T_sensor_robot = data.T_robot_sensor.inverse();
+  data.has_config = testbed.kind == TestbedKind::kLwr4;
 
   data.locations = plan_dataset(testbed, dataset);
   if (testbed.kind == TestbedKind::kUr5) {
@@ -88,10 +84,22 @@ SimulatedDataset simulate_dataset(const Testbed& testbed, Dataset dataset,
   } else {
     plan_lwr_visits(testbed, data);
   }
+  detail::acquire_visits(testbed, data);
+  return data;
+}
 
-  const auto dataset_index = static_cast<std::uint64_t>(dataset);
-  Random visit_rng = Random::stream(options.seed, kVisitStream + dataset_index);
-  Random reading_rng = Random::stream(options.seed, kReadingStream + dataset_index);
+namespace detail {
+
+void acquire_visits(const Testbed& testbed, SimulatedDataset& data) {
+  Random robot_rng = Random::stream(data.seed, kRobotStream);
+  data.robot = draw_robot_errors(data.errors.robot, testbed.nominal.n_joints(), robot_rng);
+  const SimulatedRobot robot(testbed.nominal, data.errors.robot, data.robot);
+  data.T_robot_sensor = tracker_pose(data.errors.tracker, testbed.volume_centre_m);
+  const RigidTransform T_sensor_robot = data.T_robot_sensor.inverse();
+
+  const auto dataset_index = static_cast<std::uint64_t>(data.dataset);
+  Random visit_rng = Random::stream(data.seed, kVisitStream + dataset_index);
+  Random reading_rng = Random::stream(data.seed, kReadingStream + dataset_index);
   const TrackerModel& tracker = data.errors.tracker;
   const int k = tracker.readings_per_location;
   data.readings.reserve(data.visits.size() * static_cast<std::size_t>(k));
@@ -104,8 +112,9 @@ SimulatedDataset simulate_dataset(const Testbed& testbed, Dataset dataset,
            tracker_reading(T_sensor_robot, tracker.noise_sigma_m, visit.tcp_m, reading_rng)});
     }
   }
-  return data;
 }
+
+}  // namespace detail
 
 Points3 visit_means_m(const SimulatedDataset& data) {
   Points3 sum = Points3::Zero(3, static_cast<Eigen::Index>(data.visits.size()));

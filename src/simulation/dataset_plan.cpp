@@ -91,6 +91,8 @@ const char* to_string(Dataset dataset) {
       return "A2";
     case Dataset::kB:
       return "B";
+    case Dataset::kPlan:
+      return "plan";
     case Dataset::kGrid:
       break;
   }
@@ -111,6 +113,7 @@ Dataset parse_dataset(std::string_view name) {
 }
 
 void check_dataset(TestbedKind kind, Dataset dataset) {
+  if (dataset == Dataset::kPlan) return;
   const bool ur = kind == TestbedKind::kUr5;
   VRREG_THROW_UNLESS(ur == (dataset != Dataset::kGrid),
                      "dataset " << to_string(dataset) << " does not belong to test bed "
@@ -124,6 +127,9 @@ GridSpec grid_spec(Dataset dataset) {
       return {11, 13, 9, 25e-3};
     case Dataset::kA2:
       return {21, 25, 17, 12.5e-3};
+    case Dataset::kPlan:
+      VRREG_THROW_UNLESS(false, "a plan has no grid of the paper's");
+      break;
     case Dataset::kGrid:
       break;
   }
@@ -150,6 +156,8 @@ std::vector<Eigen::Vector3i> serpentine_order(int nx, int ny, int nz) {
 }
 
 std::vector<PlannedLocation> plan_dataset(const Testbed& testbed, Dataset dataset) {
+  VRREG_THROW_UNLESS(dataset != Dataset::kPlan,
+                     "a plan's locations come from its file (simulate_plan), not the paper's");
   check_dataset(testbed.kind, dataset);
   if (dataset == Dataset::kB) return plan_b(testbed);
   return plan_grid(testbed, grid_spec(dataset));

@@ -63,6 +63,12 @@ TEST_F(StrategyCli, Strategies2And3BeatStrategy1EndToEnd) {
       run_json("register --fiducials " + q(cell_) + " --strategy 2 --config 1 -o " + q(m2));
   EXPECT_EQ(r2["strategy"], 2);
   EXPECT_DOUBLE_EQ(r2["switched_fraction"].get<double>(), 0.6);
+  EXPECT_EQ(r2["switched_fraction"], r2["switched_points_fraction"]);
+  EXPECT_EQ(r2["n_switched_points"], 75);
+  EXPECT_EQ(r2["n_points"], 125);
+  EXPECT_EQ(r2["n_switched_locations"], 150);
+  EXPECT_EQ(r2["n_locations"], 250);
+  EXPECT_DOUBLE_EQ(r2["switched_locations_fraction"].get<double>(), 0.6);
   EXPECT_LT(r2["sigma_l_mm"].get<double>(), r1["sigma_l_mm"].get<double>());
   const json e2 =
       run_json("evaluate --model " + q(m2) + " --targets " + q(cell_) + " --cube-mm 40");

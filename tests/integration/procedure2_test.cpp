@@ -74,7 +74,9 @@ TEST(Procedure2, Strategy2SwitchesTheSwappedRegionOnly) {
   EXPECT_EQ(r.summary.n_points, 125);
   EXPECT_EQ(r.summary.n_locations, 250);
   EXPECT_EQ(r.summary.n_switched, 150);  // x >= 40 mm: 3 of 5 grid planes
-  EXPECT_DOUBLE_EQ(r.summary.switched_fraction(), 0.6);
+  EXPECT_EQ(r.summary.n_switched_points, 75);
+  EXPECT_DOUBLE_EQ(r.summary.switched_locations_fraction(), 0.6);
+  EXPECT_DOUBLE_EQ(r.summary.switched_points_fraction(), 0.6);
   EXPECT_EQ(r.summary.switched_by_file_label, (std::map<int, int>{{1, 75}, {2, 75}}));
   for (const Location& loc : r.set.locations) {  // label 1 is arm A everywhere
     const bool arm_b = testing::two_arm_joints(loc.robot_m * 1000.0, true)

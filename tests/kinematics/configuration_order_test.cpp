@@ -51,7 +51,9 @@ TEST(Strategy2Relabelling, HandMadePathWithKnownSwitches) {
   EXPECT_EQ(r.reference, (std::vector<int>{0, 0, 1, 0, 2}));
   EXPECT_EQ(r.n_configurations, 15);
   EXPECT_EQ(r.n_switched, 6);  // all three locations at points 2 and 4
-  EXPECT_DOUBLE_EQ(r.switched_fraction(), 6.0 / 15.0);
+  EXPECT_EQ(r.n_switched_points, 2);
+  EXPECT_DOUBLE_EQ(r.switched_locations_fraction(), 6.0 / 15.0);
+  EXPECT_DOUBLE_EQ(r.switched_points_fraction(), 2.0 / 5.0);
 }
 
 TEST(Strategy2Relabelling, OthersAreRankedByDistanceToTheReferenceAtEachPoint) {
@@ -61,6 +63,9 @@ TEST(Strategy2Relabelling, OthersAreRankedByDistanceToTheReferenceAtEachPoint) {
   const PathRelabelling r = relabel_along_path(path);
   EXPECT_EQ(r.labels[1], (std::vector<int>{1, 3, 2}));
   EXPECT_EQ(r.n_switched, 2);
+  EXPECT_EQ(r.n_switched_points, 1);
+  EXPECT_DOUBLE_EQ(r.switched_points_fraction(), 1.0 / 2.0);     // 1 of 2 nominal points
+  EXPECT_DOUBLE_EQ(r.switched_locations_fraction(), 2.0 / 6.0);  // 2 of 6 (point, config)
 }
 
 TEST(Strategy2Relabelling, ReferenceStartsAtTheSmallestLabelNotTheFirstColumn) {
@@ -117,7 +122,8 @@ TEST(Strategy2Relabelling, RanksTakeTheLabelsTheFileUses) {
 
 TEST(Strategy2Relabelling, EmptyPathAndBadInput) {
   EXPECT_TRUE(relabel_along_path({}).labels.empty());
-  EXPECT_DOUBLE_EQ(relabel_along_path({}).switched_fraction(), 0.0);
+  EXPECT_DOUBLE_EQ(relabel_along_path({}).switched_points_fraction(), 0.0);
+  EXPECT_DOUBLE_EQ(relabel_along_path({}).switched_locations_fraction(), 0.0);
   PointConfigurations twice = listed("AB", 0);
   twice.labels = {1, 1};
   EXPECT_THROW(relabel_along_path({twice}), InputError);

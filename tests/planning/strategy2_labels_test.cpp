@@ -45,7 +45,9 @@ TEST(Strategy2Labels, RelabelsEveryLocationAlongTheFileOrder) {
   EXPECT_EQ(r.summary.n_points, 3);
   EXPECT_EQ(r.summary.n_locations, 6);
   EXPECT_EQ(r.summary.n_switched, 2);
-  EXPECT_DOUBLE_EQ(r.summary.switched_fraction(), 2.0 / 6.0);
+  EXPECT_EQ(r.summary.n_switched_points, 1);
+  EXPECT_DOUBLE_EQ(r.summary.switched_locations_fraction(), 2.0 / 6.0);
+  EXPECT_DOUBLE_EQ(r.summary.switched_points_fraction(), 1.0 / 3.0);
   EXPECT_EQ(r.summary.switched_by_file_label, (std::map<int, int>{{1, 1}, {2, 1}}));
   EXPECT_EQ(r.set.select(Role::kTarget, 1), (std::vector<std::size_t>{4}));
   // Everything else is kept.

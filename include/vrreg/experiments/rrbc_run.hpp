@@ -2,12 +2,14 @@
 // One pass of the paper's pipeline on measured locations (sections 4.3, 4.4): register the
 // fiducials (Eq. 2), rigid-body condition (Eq. 1), noise (Eq. 9), RRBC-correct the targets
 // (Eq. 6-8) and compare uncorrected with corrected target errors (Eq. 3, 4, gamma, N_bad).
+#include <Eigen/Core>
 #include <cstddef>
 #include <optional>
 #include <vector>
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/core/model.hpp"
+#include "vrreg/metrics/rigid_body.hpp"
 
 namespace vrreg::experiments {
 
@@ -18,6 +20,9 @@ struct RrbcRunOptions {
   /// sigma_opt to use instead of the fiducials' repeat readings (e.g. K = 1) [m].
   std::optional<double> sigma_opt_m;
   bool rigid_body_statistics = true;  ///< compute sigma_L (all pairs; the slow part)
+  /// > 0: also the histogram of L_ij (Eq. 1, Fig. 4-6) in bins of this width [m], spanning the
+  /// observed range (edges at multiples of the width). Needs rigid_body_statistics.
+  double l_histogram_bin_m = 0.0;
 };
 
 /// The figures of one run (paper Tables 1 and 2); lengths in m, gamma a fraction.
@@ -32,8 +37,17 @@ struct RrbcRunFigures {
   double cor_rms_t_m = 0.0;
   double gamma = 0.0;
   int n_bad = 0;
-  int n_flagged = 0;  ///< targets the interpolation could not correct
+  int n_flagged = 0;          ///< targets the interpolation could not correct
+  Eigen::VectorXd unc_tre_m;  ///< TRE(T_X) per target, in the order given (Eq. 3; Fig. 12-13)
+  Eigen::VectorXd cor_tre_m;  ///< TRE(T^_X) per target
+  std::optional<Histogram> l_histogram;  ///< when RrbcRunOptions::l_histogram_bin_m > 0
 };
+
+/// Histogram of L_ij (Eq. 1; Fig. 4-6) over all pairs in bins of `bin_m` [m] whose edges are
+/// multiples of `bin_m`, from the bin holding `range.min_m` to the one holding `range.max_m`
+/// (`range`: rigid_body_statistics of the same points).
+Histogram l_histogram(const ConstPoints3Ref& sensor_m, const ConstPoints3Ref& robot_m, double bin_m,
+                      const RigidBodyStatistics& range);
 
 /// Runs the pipeline with fiducials `fiducials` and targets `targets` (indices into `set`).
 RrbcRunFigures run_rrbc(const MeasurementSet& set, const std::vector<std::size_t>& fiducials,

@@ -7,7 +7,8 @@
 namespace vrreg::experiments {
 
 /// One Location per visit of `data` (index = visit index): nominal robot position, mean sensor
-/// reading, per-axis squared deviations, joints, and the configuration label for the LWR.
+/// reading, per-axis squared deviations, joints, the configuration label for the LWR, and
+/// source_line = visit index + 1 (the visiting order, for octuplet corners measured twice).
 MeasurementSet to_measurement_set(const simulation::SimulatedDataset& data);
 
 }  // namespace vrreg::experiments

@@ -37,7 +37,8 @@ struct Ur5SeedFigures {
 /// KUKA figures of one seed: per configuration label, Strategies 1 and 2 (octuplet 40 mm).
 struct Lwr4SeedFigures {
   std::uint64_t seed = 0;
-  double switched_fraction = 0.0;  ///< points Strategy 2 reorders (paper: 0.14)
+  double switched_points_fraction = 0.0;     ///< nominal points Strategy 2 reorders (paper: 0.14)
+  double switched_locations_fraction = 0.0;  ///< (point, config) locations it relabels
   std::array<RrbcRunFigures, 4> strategy1;
   std::array<RrbcRunFigures, 4> strategy2;
   double seconds = 0.0;

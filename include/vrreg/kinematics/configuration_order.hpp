@@ -24,10 +24,14 @@ struct PointConfigurations {
 struct PathRelabelling {
   std::vector<std::vector<int>> labels;  ///< labels[p][k]: new label of configuration k of point p
   std::vector<int> reference;            ///< per point, the column k of its reference configuration
-  int n_configurations = 0;              ///< configurations on the path
+  int n_configurations = 0;              ///< configurations (locations) on the path
   int n_switched = 0;                    ///< configurations whose new label differs from the old
-  /// n_switched / n_configurations (0 for an empty path); the paper reports ~14 %.
-  [[nodiscard]] double switched_fraction() const;
+  int n_switched_points = 0;             ///< points with at least one switched configuration
+  /// n_switched_points / points on the path (0 for an empty path): the paper's "14 % of nominal
+  /// locations were switched" (section 5.2).
+  [[nodiscard]] double switched_points_fraction() const;
+  /// n_switched / n_configurations (0 for an empty path): (point, config) locations relabelled.
+  [[nodiscard]] double switched_locations_fraction() const;
 };
 
 /// Strategy 2 (section 4.4). `path`: the nominal points in visiting order. Point 0's reference is

@@ -12,12 +12,16 @@ namespace vrreg::planning {
 /// What the relabelling changed.
 struct Strategy2Summary {
   kinematics::JointNorm norm = kinematics::JointNorm::kL2;
-  int n_points = 0;     ///< nominal points on the path (distinct point labels)
-  int n_locations = 0;  ///< (point, config) locations relabelled
-  int n_switched = 0;   ///< locations whose new label differs from the file's
+  int n_points = 0;           ///< nominal points on the path (distinct point labels)
+  int n_locations = 0;        ///< (point, config) locations relabelled
+  int n_switched = 0;         ///< locations whose new label differs from the file's
+  int n_switched_points = 0;  ///< points with at least one switched location
   std::map<int, int> switched_by_file_label;  ///< n_switched split by the label in the file
-  /// n_switched / n_locations (paper: ~14 %, all in configurations 1-3).
-  [[nodiscard]] double switched_fraction() const;
+  /// n_switched_points / n_points: the paper's "roughly 14 % of nominal locations were switched"
+  /// (section 5.2, all in configurations 1-3). The CLI's `switched_fraction` is this one.
+  [[nodiscard]] double switched_points_fraction() const;
+  /// n_switched / n_locations: the share of (point, config) locations relabelled.
+  [[nodiscard]] double switched_locations_fraction() const;
 };
 
 /// The relabelled set and what changed.

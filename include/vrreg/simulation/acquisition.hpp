@@ -24,8 +24,8 @@ struct SimulationOptions {
 
 /// One visit of the arm: a location in one arm configuration.
 struct SimulatedVisit {
-  int location = 0;               ///< index into SimulatedDataset::locations
-  int config = 0;                 ///< LWR: label 1..4 in the IK module's order; UR: 0 (none)
+  int location = 0;  ///< index into SimulatedDataset::locations
+  int config = 0;    ///< LWR grid: label 1..4 in the IK module's order; plan: its config; else 0
   kinematics::JointVector q_rad;  ///< commanded joints, as the controller reports them [rad]
   Eigen::Vector3d tcp_m = Eigen::Vector3d::Zero();  ///< true TCP position of the visit [m, base]
 };
@@ -46,6 +46,7 @@ struct SimulatedDataset {
   RobotErrors robot;              ///< the robot the seed drew
   RigidTransform T_robot_sensor;  ///< the true tracker pose
   double sigma_rep_spec_m = 0.0;  ///< the robot's specified repeatability
+  bool has_config = false;  ///< visits carry configuration labels (LWR grid; plans with config)
   std::vector<PlannedLocation> locations;
   std::vector<SimulatedVisit> visits;
   std::vector<SimulatedReading> readings;

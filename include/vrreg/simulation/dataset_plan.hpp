@@ -12,14 +12,15 @@
 
 namespace vrreg::simulation {
 
-/// A dataset of the paper.
-enum class Dataset { kA1, kA2, kB, kGrid };
+/// A dataset of the paper, or a user's plan (Procedure 1, measured with simulate_plan).
+enum class Dataset { kA1, kA2, kB, kGrid, kPlan };
 
-/// "A1", "A2", "B" or "grid".
+/// "A1", "A2", "B", "grid" or "plan".
 const char* to_string(Dataset dataset);
-/// Parses a dataset name (case-insensitive); throws InputError otherwise.
+/// Parses a dataset name of the paper (case-insensitive; not "plan"); throws InputError otherwise.
 Dataset parse_dataset(std::string_view name);
-/// Throws InputError unless `dataset` belongs to test bed `kind` (UR5: A1, A2, B; LWR: grid).
+/// Throws InputError unless `dataset` belongs to test bed `kind` (UR5: A1, A2, B; LWR: grid;
+/// both: plan).
 void check_dataset(TestbedKind kind, Dataset dataset);
 
 /// A regular grid of nx x ny x nz nodes with spacing step_m, centred on the work volume.
@@ -30,7 +31,7 @@ struct GridSpec {
   double step_m = 0.0;
 };
 
-/// The grid of a grid dataset (A1, A2, grid); B uses A1's.
+/// The grid of a grid dataset (A1, A2, grid); B uses A1's; throws InputError for a plan.
 GridSpec grid_spec(Dataset dataset);
 
 /// Grid nodes (i, j, k) in serpentine order: x fastest, the x direction reversing on every row and
@@ -46,7 +47,8 @@ struct PlannedLocation {
   double cube_edge_m = 0.0;  ///< B: edge of the octuplet cube this fiducial is a corner of
 };
 
-/// The nominal locations of `dataset` on test bed `testbed`, in visiting order.
+/// The nominal locations of `dataset` on test bed `testbed`, in visiting order (not for a plan:
+/// InputError).
 std::vector<PlannedLocation> plan_dataset(const Testbed& testbed, Dataset dataset);
 
 }  // namespace vrreg::simulation

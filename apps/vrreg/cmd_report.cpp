@@ -1,0 +1,127 @@
+// vrreg report: one self-contained HTML page (Plotly inlined, works offline) with the paper's
+// kinds of figures, either for a user's own cell (--model, --targets: evaluated as `evaluate`
+// does, with a verdict in words) or for the paper's experiments (--reproduce DIR).
+#include <cstdio>
+#include <memory>
+
+#include "cli_support.hpp"
+#include "command_registry.hpp"
+#include "report_cli.hpp"
+#include "strategy_cli.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/experiments/report_cell.hpp"
+#include "vrreg/experiments/report_reproduce.hpp"
+#include "vrreg/io/measurement_csv.hpp"
+#include "vrreg/io/model_json.hpp"
+#include "vrreg/io/plan_csv.hpp"
+
+namespace vrreg::cli {
+namespace {
+
+struct ReportArgs {
+  std::string model;
+  std::string targets;
+  std::optional<int> config;
+  InterpolationFlags interpolation;
+  StrategyFlags strategy;
+  std::optional<double> sigma_rep_mm;
+  std::string reproduce;
+  std::string plan;
+  std::string output;
+  bool json = false;
+};
+
+// The cell page: the targets evaluated exactly as `vrreg evaluate` does.
+experiments::ReportPage cell_page(const ReportArgs& args) {
+  const RegistrationModel model = io::read_model_json(args.model);
+  const int strategy = evaluate_strategy(args.strategy, model, args.model);
+  MeasurementSet set = io::read_measurement_csv(args.targets);
+  std::string method;
+  if (strategy == 2) {
+    set = relabel_file(set, joint_norm(args.strategy, &model)).set;
+  }
+  if (strategy > 0) {
+    method = "Strategy " + std::to_string(strategy) +
+             (strategy > 1 ? " (" + model.procedure2.joint_norm + " joint distance)" : "");
+  }
+  const std::optional<int> config = args.config ? args.config : model.config;
+  VRREG_THROW_UNLESS(strategy != 1 || config,
+                     args.model << ": --strategy 1 evaluates one configuration: give --config N");
+  const std::vector<std::size_t> rows = select_rows(set, Role::kTarget, config);
+  const InterpolationSettings settings = args.interpolation.apply(model.interpolation);
+  const TargetCorrection c =
+      strategy == 3
+          ? correct_strategy3(model, set, rows, settings, joint_norm(args.strategy, &model))
+          : correct_targets(model, set.sensor_points(rows), set.robot_points(rows), settings,
+                            source_lines(set, rows));
+  std::optional<double> sigma_rep;
+  if (args.sigma_rep_mm) sigma_rep = units::mm_to_m(*args.sigma_rep_mm);
+  const experiments::CellReportInput input{model,        set,    rows,   c,        args.model,
+                                           args.targets, config, method, sigma_rep};
+  const experiments::CellAnalysis analysis = experiments::analyze_cell(input);
+  return experiments::cell_report_page(input, analysis);
+}
+
+void run_report(const ReportArgs& args) {
+  const bool cell = !args.model.empty() || !args.targets.empty();
+  VRREG_THROW_UNLESS(cell != !args.reproduce.empty(),
+                     "give either --model and --targets (your cell) or --reproduce DIR "
+                     "(the paper's experiments)");
+  VRREG_THROW_UNLESS(!cell || (!args.model.empty() && !args.targets.empty()),
+                     "a cell report needs both --model and --targets");
+  experiments::ReportPage page;
+  if (cell) {
+    page = cell_page(args);
+    if (!args.plan.empty()) {
+      page.sections.push_back(experiments::plan_section(io::read_plan_csv(args.plan), args.plan));
+    }
+    write_report_html(page, args.output);
+  } else {
+    page = write_reproduce_report(args.reproduce, args.plan, args.output);
+  }
+  if (args.json) {
+    nlohmann::json j;
+    j["output"] = args.output;
+    j["charts"] = page.figure_count();
+    nlohmann::json verdict = nlohmann::json::array();
+    for (const auto& v : page.verdict) verdict.push_back(v.text);
+    j["verdict"] = verdict;
+    print_json(j);
+    return;
+  }
+  std::printf("report with %d charts written to %s (one file, opens offline in a browser)\n",
+              page.figure_count(), args.output.c_str());
+  for (const auto& v : page.verdict) std::printf("  - %s\n", v.text.c_str());
+}
+
+void add_report_command(CLI::App& app) {
+  auto args = std::make_shared<ReportArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "report",
+      "write one self-contained HTML report (charts work offline): for your cell "
+      "(--model, --targets) or for the paper's experiments (--reproduce DIR)");
+  cmd->add_option("--model", args->model, "model JSON written by 'vrreg register -o'");
+  cmd->add_option("--targets", args->targets, "measurement CSV; its target rows are evaluated");
+  cmd->add_option("--config", args->config,
+                  "use only target rows with this configuration label (default: the model's)");
+  args->interpolation.add_to(*cmd);
+  args->strategy.add_to(*cmd, false);
+  cmd->add_option("--sigma-rep-mm", args->sigma_rep_mm,
+                  "robot repeatability in mm, for sigma_noise and rho (UR5 0.1, LWR 4+ 0.05)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--reproduce", args->reproduce,
+                  "directory written by 'vrreg reproduce --out DIR' (reads DIR/reproduce.json)");
+  cmd->add_option("--plan", args->plan,
+                  "plan CSV from 'vrreg plan': adds its fiducial layout "
+                  "(paper Fig. 16)");
+  cmd->add_option("-o,--output", args->output, "the HTML file to write")->required();
+  cmd->add_flag("--json", args->json, "print one JSON object (output, charts, verdict)");
+  cmd->callback([args] { run_report(*args); });
+}
+
+}  // namespace
+
+VRREG_REGISTER_COMMAND(35, add_report_command);
+
+}  // namespace vrreg::cli

@@ -1,0 +1,59 @@
+#include "vrreg/simulation/plan_acquisition.hpp"
+
+#include <set>
+#include <utility>
+
+#include "acquisition_detail.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
+
+namespace vrreg::simulation {
+namespace {
+
+void check_location(const Testbed& testbed, const CommandedLocation& c, bool with_config) {
+  const int n = testbed.nominal.n_joints();
+  VRREG_THROW_UNLESS(c.q_rad.size() == n, "plan location '" << c.point << "' has " << c.q_rad.size()
+                                                            << " joints; " << testbed.name
+                                                            << " has " << n);
+  VRREG_THROW_UNLESS(c.q_rad.allFinite() && c.robot_m.allFinite(),
+                     "plan location '" << c.point << "' has non-finite joints or position");
+  VRREG_THROW_UNLESS(c.config.has_value() == with_config,
+                     "plan location '" << c.point << "': a config on some locations only");
+  const Eigen::Vector3d tcp =
+      kinematics::forward_kinematics(testbed.nominal, c.q_rad).translation();
+  VRREG_THROW_UNLESS((tcp - c.robot_m).norm() <= kPlanTcpToleranceM,
+                     "plan location '" << c.point << "': its joints put the " << testbed.name
+                                       << " test bed's TCP " << 1e3 * (tcp - c.robot_m).norm()
+                                       << " mm from its robot position (a plan for another robot "
+                                          "or tool? plan with --robot "
+                                       << testbed.name << ")");
+}
+
+}  // namespace
+
+SimulatedDataset simulate_plan(const Testbed& testbed, const std::vector<CommandedLocation>& plan,
+                               const SimulationOptions& options) {
+  VRREG_THROW_UNLESS(!plan.empty(), "the plan has no locations");
+  SimulatedDataset data;
+  data.testbed = testbed.name;
+  data.dataset = Dataset::kPlan;
+  data.seed = options.seed;
+  data.errors = options.errors.value_or(testbed.default_errors);
+  data.errors.validate(testbed.nominal.n_joints());
+  data.sigma_rep_spec_m = testbed.sigma_rep_spec_m;
+  data.has_config = plan.front().config.has_value();
+  std::set<std::pair<std::string, int>> seen;
+  for (std::size_t n = 0; n < plan.size(); ++n) {
+    const CommandedLocation& c = plan[n];
+    check_location(testbed, c, data.has_config);
+    VRREG_THROW_UNLESS(seen.insert({c.point, c.config.value_or(0)}).second,
+                       "plan location '" << c.point << "' is listed twice");
+    data.locations.push_back({c.point, c.role, c.robot_m, -1, 0.0});
+    data.visits.push_back(
+        {static_cast<int>(n), c.config.value_or(0), c.q_rad, Eigen::Vector3d::Zero()});
+  }
+  detail::acquire_visits(testbed, data);
+  return data;
+}
+
+}  // namespace vrreg::simulation
