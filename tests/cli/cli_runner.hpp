@@ -23,14 +23,24 @@ inline std::string read_text(const std::filesystem::path& path) {
   return ss.str();
 }
 
+/// Runs `vrreg ARGS` through the shell (ARGS already quoted as needed), in directory `cwd` when
+/// not empty, with `env` ("NAME=value ...") prepended to the command when not empty.
+inline CliResult run_vrreg_in(const std::filesystem::path& cwd, const std::string& args,
+                              const std::string& env = "");
+
 /// Runs `vrreg ARGS` through the shell (ARGS already quoted as needed).
-inline CliResult run_vrreg(const std::string& args) {
+inline CliResult run_vrreg(const std::string& args) { return run_vrreg_in({}, args); }
+
+inline CliResult run_vrreg_in(const std::filesystem::path& cwd, const std::string& args,
+                              const std::string& env) {
   const auto dir = std::filesystem::temp_directory_path();
   static int counter = 0;
   const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(counter++);
   const auto out_path = dir / ("vrreg-cli-out-" + tag);
   const auto err_path = dir / ("vrreg-cli-err-" + tag);
-  const std::string command = std::string("'") + VRREG_CLI_PATH + "' " + args + " >'" +
+  const std::string prefix =
+      (cwd.empty() ? std::string() : "cd '" + cwd.string() + "' && ") + (env.empty() ? "" : env + " ");
+  const std::string command = prefix + "'" + VRREG_CLI_PATH + "' " + args + " >'" +
                               out_path.string() + "' 2>'" + err_path.string() + "' </dev/null";
   const int raw = std::system(command.c_str());
   CliResult r;

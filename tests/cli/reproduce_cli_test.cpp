@@ -26,21 +26,16 @@ class ReproduceCli : public ::testing::Test {
   fs::path dir_;
 };
 
-// Under the sanitizers only the KUKA part runs (the UR5's 250 000 readings take minutes there).
-std::string subset() { return sanitized() ? " --only lwr4" : ""; }
-
 TEST_F(ReproduceCli, PrintsTablesBesideThePaperAndWritesTheFigureData) {
-  const CliResult r = run_vrreg("reproduce --out '" + out_dir() + "'" + subset());
+  const CliResult r = run_vrreg("reproduce --out '" + out_dir() + "'");
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("vrreg reproduce: seed 1"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Table 2. KUKA LWR 4+"), std::string::npos);
   EXPECT_NE(r.out.find("(0.977)"), std::string::npos) << "paper's sigma_L beside ours";
   EXPECT_NE(r.out.find("Findings of the paper"), std::string::npos);
-  if (!sanitized()) {
-    EXPECT_NE(r.out.find("Table 1. UR5"), std::string::npos);
-    EXPECT_NE(r.out.find("Figures 7 and 8"), std::string::npos);
-    EXPECT_EQ(r.out.find("NOT MET"), std::string::npos) << r.out;
-  }
+  EXPECT_NE(r.out.find("Table 1. UR5"), std::string::npos);
+  EXPECT_NE(r.out.find("Figures 7 and 8"), std::string::npos);
+  EXPECT_EQ(r.out.find("NOT MET"), std::string::npos) << r.out;
   // stderr is a file here: no progress bar, only the timing line.
   EXPECT_EQ(r.err.find('\r'), std::string::npos);
   EXPECT_NE(r.err.find("reproduce: 1 seed in"), std::string::npos) << r.err;
@@ -52,7 +47,7 @@ TEST_F(ReproduceCli, PrintsTablesBesideThePaperAndWritesTheFigureData) {
   EXPECT_TRUE(read_text(dir_ / "out" / "table2.csv").starts_with("config,strategy,sigma_l_mm,"));
   const json written = json::parse(read_text(dir_ / "out" / "reproduce.json"));
   const CliResult again =
-      run_vrreg("reproduce --json --quiet --out '" + (dir_ / "again").string() + "'" + subset());
+      run_vrreg("reproduce --json --quiet --out '" + (dir_ / "again").string() + "'");
   ASSERT_EQ(again.status, 0) << again.err;
   EXPECT_TRUE(again.err.empty()) << again.err;
   EXPECT_EQ(json::parse(again.out), written)
@@ -60,7 +55,7 @@ TEST_F(ReproduceCli, PrintsTablesBesideThePaperAndWritesTheFigureData) {
 }
 
 TEST_F(ReproduceCli, JsonShape) {
-  const CliResult r = run_vrreg("reproduce --json --quiet --out ''" + subset());
+  const CliResult r = run_vrreg("reproduce --json --quiet --out ''");
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j["seed"], 1);
@@ -80,7 +75,6 @@ TEST_F(ReproduceCli, JsonShape) {
     for (const char* key : {"id", "statement", "value", "met"}) EXPECT_TRUE(f.contains(key));
   }
   EXPECT_NEAR(j["kuka"]["switched_points_fraction"].get<double>(), 0.168, 0.001);
-  if (sanitized()) return;
   for (const char* data : {"A1", "A2"}) {
     for (const char* key :
          {"sigma_opt_mm", "sigma_l_mm", "sigma_noise_mm", "rho", "unc_rms_t_mm", "cor_rms_t_mm",
@@ -96,7 +90,7 @@ TEST_F(ReproduceCli, JsonShape) {
 }
 
 TEST_F(ReproduceCli, SeveralSeedsGiveMeanAndSd) {
-  if (sanitized()) GTEST_SKIP() << "several seeds: release builds only";
+  if (sanitized()) GTEST_SKIP() << "several seeds twice: release builds only";
   const CliResult r = run_vrreg("reproduce --seed 3 --seeds 2 --json --quiet --out ''");
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = json::parse(r.out);
