@@ -7,7 +7,6 @@
 #include <cmath>
 #include <nanoflann.hpp>
 
-#include "vrreg/core/model.hpp"
 #include "vrreg/core/random.hpp"
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/correction/grid.hpp"
@@ -59,16 +58,14 @@ vrreg::RigidTransform sensor_pose() {
   return T;
 }
 
-/// A model over the fiducials with mm-scale corrections.
-vrreg::RegistrationModel make_model(const Points3& fiducials_robot_m) {
-  vrreg::RegistrationModel model;
+/// A correction field over the fiducials with mm-scale corrections.
+vrreg::CorrectionField make_model(const Points3& fiducials_robot_m) {
+  vrreg::CorrectionField model;
   model.T_robot_sensor = sensor_pose();
+  model.fiducials_robot_m = fiducials_robot_m;
   vrreg::Random rng(79);
   model.corrections_sensor_m.resize(3, fiducials_robot_m.cols());
   for (Eigen::Index j = 0; j < fiducials_robot_m.cols(); ++j) {
-    vrreg::Location f;
-    f.robot_m = fiducials_robot_m.col(j);
-    model.fiducials.push_back(f);
     model.corrections_sensor_m.col(j) = rng.normal3(0.5e-3);
   }
   return model;
@@ -202,7 +199,7 @@ BENCHMARK(BM_peer_nearest8_idw)->Arg(0)->Arg(1)->Arg(10000)->Unit(benchmark::kMi
 /// The whole of correct_targets (build + stencils + Eq. 7, 8 + mapping, TBB over targets).
 void correct_all(benchmark::State& state, vrreg::InterpolationMethod method) {
   const Points3 f = a_fiducials(static_cast<int>(state.range(0)));
-  const vrreg::RegistrationModel model = make_model(f);
+  const vrreg::CorrectionField model = make_model(f);
   vrreg::InterpolationSettings settings;
   settings.method = method;
   settings.cube_edge_m = state.range(0) == 0 ? 0.05 : 0.025;

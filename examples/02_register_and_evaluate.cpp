@@ -14,14 +14,8 @@
 #include <exception>
 #include <string>
 
-#include "vrreg/core/model.hpp"
-#include "vrreg/correction/correct_targets.hpp"
-#include "vrreg/correction/rrbc.hpp"
 #include "vrreg/io/measurement_csv.hpp"
-#include "vrreg/metrics/errors.hpp"
-#include "vrreg/metrics/improvement.hpp"
-#include "vrreg/metrics/rigid_body.hpp"
-#include "vrreg/registration/rigid.hpp"
+#include "vrreg/vrreg.hpp"
 
 int main(int argc, char** argv) {
   try {
@@ -30,40 +24,25 @@ int main(int argc, char** argv) {
 
     // 1. Read: repeat readings of a location are averaged; lengths are metres from here on.
     const vrreg::MeasurementSet set = vrreg::io::read_measurement_csv(path);
-    const std::vector<std::size_t> fiducials = set.select(vrreg::Role::kFiducial);
-    const std::vector<std::size_t> targets = set.select(vrreg::Role::kTarget);
-    const vrreg::Points3 fid_sensor = set.sensor_points(fiducials);
-    const vrreg::Points3 fid_robot = set.robot_points(fiducials);
 
-    // 2. Register (Eq. 2) and keep what correcting needs: the fiducials and their epsilon_j.
-    const vrreg::RegistrationResult reg = vrreg::register_rigid(fid_sensor, fid_robot);
-    vrreg::RegistrationModel model;
-    model.T_robot_sensor = reg.T_robot_sensor;
-    model.fre_m = reg.fre_m;
-    for (std::size_t i : fiducials) model.fiducials.push_back(set.locations[i]);
-    model.corrections_sensor_m =
-        vrreg::fiducial_corrections(reg.T_robot_sensor, fid_sensor, fid_robot);
-    model.interpolation.method = vrreg::InterpolationMethod::kOctuplet;
-    model.interpolation.cube_edge_m = cube_m;
-    const double sigma_l_m = vrreg::rigid_body_statistics(fid_sensor, fid_robot).sigma_l_m;
+    // 2. Register the fiducial rows (Eq. 2) and keep their epsilon_j (Eq. 6) in the model, with
+    //    octuplet interpolation as its default.
+    vrreg::RegisterOptions options;
+    options.interpolation.method = vrreg::InterpolationMethod::kOctuplet;
+    options.interpolation.cube_edge_m = cube_m;
+    const vrreg::RegisterResult r = vrreg::register_fiducials(set, options);
 
-    // 3. Correct the targets measured by the sensor and map them to the robot frame.
-    const vrreg::Points3 tgt_sensor = set.sensor_points(targets);
-    const vrreg::Points3 tgt_robot = set.robot_points(targets);
-    const vrreg::TargetCorrection c =
-        vrreg::correct_targets(model, tgt_sensor, tgt_robot, model.interpolation);
+    // 3-4. Correct the target rows, map them to the robot frame and compare with their robot
+    //      positions: TRE (Eq. 3), RMS_T (Eq. 4), gamma, N_bad.
+    const vrreg::EvaluateResult e = vrreg::evaluate(r.model, set);
+    const vrreg::ImprovementSummary& s = e.summary;
 
-    // 4. TRE against the targets' robot positions (Eq. 3), RMS_T (Eq. 4), gamma, N_bad.
-    const Eigen::VectorXd unc = vrreg::point_errors(c.uncorrected_robot_m, tgt_robot);
-    const Eigen::VectorXd cor = vrreg::point_errors(c.corrected_robot_m, tgt_robot);
-    const vrreg::ImprovementSummary s = vrreg::summarize_improvement(unc, cor);
-
-    std::printf("%s: %zu fiducials, %zu targets\n", path.c_str(), fiducials.size(), targets.size());
-    std::printf("  FRE                %.3f mm   sigma_L %.3f mm\n", reg.fre_m * 1e3,
-                sigma_l_m * 1e3);
+    std::printf("%s: %zu fiducials, %d targets\n", path.c_str(), r.n_registered, s.n_targets);
+    std::printf("  FRE                %.3f mm   sigma_L %.3f mm\n", r.registration.fre_m * 1e3,
+                r.rigid_body.sigma_l_m * 1e3);
     std::printf("  RMS_T uncorrected  %.3f mm\n", s.unc_rms_t_m * 1e3);
     std::printf("  RMS_T corrected    %.3f mm   (octuplet, %.0f mm cubes; %d not correctable)\n",
-                s.cor_rms_t_m * 1e3, cube_m * 1e3, c.n_flagged);
+                s.cor_rms_t_m * 1e3, cube_m * 1e3, e.correction.n_flagged);
     std::printf("  gamma              %.1f %%\n", 100.0 * s.gamma);
     std::printf("  N_bad              %d of %d targets got worse\n", s.n_bad, s.n_targets);
     return 0;

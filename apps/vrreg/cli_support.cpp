@@ -6,7 +6,6 @@
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
-#include "vrreg/io/file_error.hpp"
 
 namespace vrreg::cli {
 
@@ -35,41 +34,14 @@ void InterpolationFlags::add_to(CLI::App& command) {
       ->check(CLI::PositiveNumber);
 }
 
-InterpolationSettings InterpolationFlags::apply(InterpolationSettings stored) const {
-  if (!method.empty()) stored.method = parse_interpolation_method(method);
-  if (cube_mm) {
-    stored.cube_edge_m = units::mm_to_m(*cube_mm);
-    if (method.empty()) stored.method = InterpolationMethod::kOctuplet;
-  }
-  VRREG_THROW_UNLESS(stored.method != InterpolationMethod::kOctuplet || stored.cube_edge_m > 0.0,
-                     "--interpolation octuplet needs --cube-mm EDGE");
-  return stored;
+InterpolationChoice InterpolationFlags::choice() const {
+  InterpolationChoice c;
+  if (!method.empty()) c.method = parse_interpolation_method(method);
+  if (cube_mm) c.cube_edge_m = units::mm_to_m(*cube_mm);
+  return c;
 }
 
-std::vector<std::size_t> select_rows(const MeasurementSet& set, Role role,
-                                     std::optional<int> config) {
-  std::vector<std::size_t> rows = set.select(role, config);
-  const std::string what = role == Role::kFiducial ? "fiducial" : "target";
-  // FileError: the message names the file once, and the commands pass it on unchanged.
-  if (config && !set.has_config) {
-    throw io::FileError(set.source, 0,
-                        "--config " + std::to_string(*config) + " given but the file has no config column");
-  }
-  if (rows.empty()) {
-    throw io::FileError(set.source, 0,
-                        "no " + what + " rows" +
-                            (config ? " with config " + std::to_string(*config) : std::string()));
-  }
-  return rows;
-}
-
-std::vector<std::size_t> source_lines(const MeasurementSet& set,
-                                      const std::vector<std::size_t>& rows) {
-  std::vector<std::size_t> lines;
-  lines.reserve(rows.size());
-  for (std::size_t i : rows) lines.push_back(set.locations[i].source_line);
-  return lines;
-}
+InterpolationSettings InterpolationFlags::settings() const { return choice().apply({}); }
 
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
 

@@ -1,17 +1,13 @@
 // vrreg correct: RRBC-corrected robot-frame positions for points measured by the sensor
 // (Eq. 7, 8, then mapped with {R, tau}): what the robot should be commanded to.
 #include <cstdio>
-#include <sstream>
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
-#include "strategy_cli.hpp"
-#include "vrreg/core/check.hpp"
-#include "vrreg/core/units.hpp"
-#include "vrreg/correction/correct_targets.hpp"
-#include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 #include "vrreg/io/model_json.hpp"
+#include "vrreg/io/results_csv.hpp"
+#include "vrreg/vrreg.hpp"
 
 namespace vrreg::cli {
 namespace {
@@ -25,53 +21,21 @@ struct CorrectArgs {
   bool json = false;
 };
 
-void run_correct(const CorrectArgs& args) {
-  const RegistrationModel model = io::read_model_json(args.model);
+void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& model) {
   io::CsvReadOptions read_options;
   read_options.require_robot = false;  // points to correct need only their sensor position
-  MeasurementSet set = io::read_measurement_csv(args.points, read_options);
-  const int strategy = model.procedure2.strategy;  // Procedure 2 (section 4.4): as registered
-  if (strategy == 2) set = relabel_file(set, joint_norm({}, &model)).set;
-  const std::optional<int> config = args.config ? args.config : model.config;
-  const std::vector<std::size_t> rows = select_rows(set, Role::kTarget, config);
-  const InterpolationSettings settings = args.interpolation.apply(model.interpolation);
-  Points3 nominal(3, 0);
-  if (settings.method == InterpolationMethod::kOctuplet || strategy == 3) {
-    for (std::size_t i : rows) {
-      VRREG_THROW_UNLESS(set.locations[i].has_robot,
-                         args.points << ":" << set.locations[i].source_line
-                                     << ": octuplet interpolation needs the nominal robot position "
-                                        "of every point (robot_x_mm, ...)");
-    }
-    nominal = set.robot_points(rows);
-  }
-  const TargetCorrection c =
-      strategy == 3 ? correct_strategy3(model, set, rows, settings, joint_norm({}, &model))
-                    : correct_targets(model, set.sensor_points(rows), nominal, settings,
-                                      source_lines(set, rows));
-
-  std::ostringstream out;
-  out.precision(12);
-  out << "# vrreg correct: model " << args.model << ", points " << args.points
-      << ", interpolation " << to_string(c.method_used) << " (" << c.layout << ")\n";
-  out << "point,config,status,robot_x_mm,robot_y_mm,robot_z_mm,"
-         "uncorrected_robot_x_mm,uncorrected_robot_y_mm,uncorrected_robot_z_mm,"
-         "correction_x_mm,correction_y_mm,correction_z_mm\n";
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const Location& loc = set.locations[rows[k]];
-    const auto n = static_cast<Eigen::Index>(k);
-    out << loc.point << ',' << (loc.config ? std::to_string(*loc.config) : "") << ','
-        << to_string(c.stencils[k].status);
-    for (int a = 0; a < 3; ++a) out << ',' << units::m_to_mm(c.corrected_robot_m(a, n));
-    for (int a = 0; a < 3; ++a) out << ',' << units::m_to_mm(c.uncorrected_robot_m(a, n));
-    for (int a = 0; a < 3; ++a) out << ',' << units::m_to_mm(c.corrections_sensor_m(a, n));
-    out << '\n';
-  }
-  io::write_file_atomically(args.output, out.str());
+  CorrectOptions options;
+  options.config = args.config;
+  options.interpolation = args.interpolation.choice();
+  const CorrectResult r =
+      correct(model, io::read_measurement_csv(args.points, read_options), options);
+  const TargetCorrection& c = r.correction;
+  io::write_corrected_csv(args.output, r, args.model, args.points);
+  const std::size_t n_points = r.names.size();
 
   if (args.json) {
     nlohmann::json j;
-    j["points"] = rows.size();
+    j["points"] = n_points;
     j["n_flagged"] = c.n_flagged;
     j["interpolation"] = to_string(c.method_used);
     j["layout"] = c.layout;
@@ -79,7 +43,7 @@ void run_correct(const CorrectArgs& args) {
     print_json(j);
     return;
   }
-  std::printf("corrected %zu points from %s with model %s\n", rows.size(), args.points.c_str(),
+  std::printf("corrected %zu points from %s with model %s\n", n_points, args.points.c_str(),
               args.model.c_str());
   std::printf("  interpolation                 %s: %s\n", to_string(c.method_used), c.layout.c_str());
   if (c.n_flagged > 0) {
@@ -88,6 +52,17 @@ void run_correct(const CorrectArgs& args) {
                 c.n_flagged);
   }
   std::printf("  robot-frame positions (mm) written to %s\n", args.output.c_str());
+}
+
+void run_correct(const CorrectArgs& args) {
+  const RegistrationModel model = io::read_model_json(args.model);
+  try {
+    run_correct_unchecked(args, model);
+  } catch (const FileError&) {
+    throw;  // names the points file (or the model file) already
+  } catch (const InputError& e) {
+    throw FileError(args.model, 0, e.what());  // about the model and what it can do
+  }
 }
 
 void add_correct_command(CLI::App& app) {

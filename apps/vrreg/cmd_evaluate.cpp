@@ -2,19 +2,15 @@
 // uncorrected and RRBC-corrected (Eq. 3, 4, 7, 8), gamma, N_bad and Delta TRE (section 5.1),
 // following the model's Procedure 2 strategy (section 4.4, strategy_cli.hpp).
 #include <cstdio>
-#include <sstream>
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "strategy_cli.hpp"
-#include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
-#include "vrreg/correction/correct_targets.hpp"
-#include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 #include "vrreg/io/model_json.hpp"
-#include "vrreg/metrics/errors.hpp"
-#include "vrreg/metrics/improvement.hpp"
+#include "vrreg/io/results_csv.hpp"
+#include "vrreg/vrreg.hpp"
 
 namespace vrreg::cli {
 namespace {
@@ -29,61 +25,21 @@ struct EvaluateArgs {
   bool json = false;
 };
 
-std::string per_target_csv(const MeasurementSet& set, const std::vector<std::size_t>& rows,
-                           const TargetCorrection& c, const Eigen::VectorXd& unc,
-                           const Eigen::VectorXd& cor) {
-  std::ostringstream out;
-  out.precision(10);
-  out << "point,config,status,unc_tre_mm,cor_tre_mm,delta_tre_mm,"
-         "corrected_robot_x_mm,corrected_robot_y_mm,corrected_robot_z_mm,"
-         "correction_x_mm,correction_y_mm,correction_z_mm\n";
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const Location& loc = set.locations[rows[k]];
-    const auto n = static_cast<Eigen::Index>(k);
-    out << loc.point << ',' << (loc.config ? std::to_string(*loc.config) : "") << ','
-        << to_string(c.stencils[k].status) << ',' << units::m_to_mm(unc[n]) << ','
-        << units::m_to_mm(cor[n]) << ',' << units::m_to_mm(cor[n] - unc[n]);
-    for (int a = 0; a < 3; ++a) out << ',' << units::m_to_mm(c.corrected_robot_m(a, n));
-    for (int a = 0; a < 3; ++a) out << ',' << units::m_to_mm(c.corrections_sensor_m(a, n));
-    out << '\n';
-  }
-  return out.str();
-}
+void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& model) {
+  EvaluateOptions options;
+  options.config = args.config;
+  options.interpolation = args.interpolation.choice();
+  apply_evaluate_flags(args.strategy, options);
+  const EvaluateResult r = evaluate(model, io::read_measurement_csv(args.targets), options);
+  const ImprovementSummary& s = r.summary;
+  const TargetCorrection& c = r.correction;
+  const Eigen::VectorXd& unc = r.unc_tre_m;
+  const Eigen::VectorXd& cor = r.cor_tre_m;
+  const std::optional<int>& config = r.config;
+  const std::vector<std::string>& bad = r.bad_targets;
+  const std::optional<planning::Strategy2Summary>& relabelled = r.relabelled;
 
-void run_evaluate(const EvaluateArgs& args) {
-  const RegistrationModel model = io::read_model_json(args.model);
-  const int strategy = evaluate_strategy(args.strategy, model, args.model);
-  MeasurementSet set = io::read_measurement_csv(args.targets);
-  std::optional<planning::Strategy2Summary> relabelled;
-  if (strategy == 2) {  // the targets take the labels of their own path, like the fiducials did
-    planning::Strategy2Result r = relabel_file(set, joint_norm(args.strategy, &model));
-    set = std::move(r.set);
-    relabelled = r.summary;
-  }
-  // A model built for one configuration is evaluated on that configuration unless told otherwise.
-  const std::optional<int> config = args.config ? args.config : model.config;
-  VRREG_THROW_UNLESS(strategy != 1 || config,
-                     args.model << ": --strategy 1 evaluates one configuration: give --config N");
-  const std::vector<std::size_t> rows = select_rows(set, Role::kTarget, config);
-  const Points3 targets_sensor = set.sensor_points(rows);
-  const Points3 targets_robot = set.robot_points(rows);
-  const InterpolationSettings settings = args.interpolation.apply(model.interpolation);
-
-  const TargetCorrection c =
-      strategy == 3
-          ? correct_strategy3(model, set, rows, settings, joint_norm(args.strategy, &model))
-          : correct_targets(model, targets_sensor, targets_robot, settings,
-                                      source_lines(set, rows));
-  // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.
-  const Eigen::VectorXd unc = point_errors(c.uncorrected_robot_m, targets_robot);
-  const Eigen::VectorXd cor = point_errors(c.corrected_robot_m, targets_robot);
-  const ImprovementSummary s = summarize_improvement(unc, cor);
-
-  if (!args.per_target.empty()) {
-    io::write_file_atomically(args.per_target, per_target_csv(set, rows, c, unc, cor));
-  }
-  std::vector<std::string> bad;
-  for (int n : s.bad_targets) bad.push_back(set.locations[rows[static_cast<std::size_t>(n)]].point);
+  if (!args.per_target.empty()) io::write_per_target_csv(args.per_target, r);
 
   if (args.json) {
     nlohmann::json j;
@@ -93,7 +49,7 @@ void run_evaluate(const EvaluateArgs& args) {
     j["interpolation"] = to_string(c.method_used);
     j["layout"] = c.layout;
     if (c.method_used == InterpolationMethod::kOctuplet) {
-      j["cube_mm"] = units::m_to_mm(settings.cube_edge_m);
+      j["cube_mm"] = units::m_to_mm(r.interpolation.cube_edge_m);
     }
     j["n_targets"] = s.n_targets;
     j["n_flagged"] = c.n_flagged;
@@ -105,7 +61,10 @@ void run_evaluate(const EvaluateArgs& args) {
     j["unc_max_tre_mm"] = units::m_to_mm(unc.size() ? unc.maxCoeff() : 0.0);
     j["cor_max_tre_mm"] = units::m_to_mm(cor.size() ? cor.maxCoeff() : 0.0);
     add_strategy_json(j, model, relabelled);
-    if (strategy == 1 && model.procedure2.strategy == 0) j["strategy"] = 1;
+    if (r.strategy == planning::Strategy::kAsListed &&
+        model.procedure2.strategy == planning::Strategy::kNone) {
+      j["strategy"] = 1;
+    }
     print_json(j);
     return;
   }
@@ -131,6 +90,17 @@ void run_evaluate(const EvaluateArgs& args) {
   }
   std::printf("\n");
   if (!args.per_target.empty()) std::printf("  per-target errors written to %s\n", args.per_target.c_str());
+}
+
+void run_evaluate(const EvaluateArgs& args) {
+  const RegistrationModel model = io::read_model_json(args.model);
+  try {
+    run_evaluate_unchecked(args, model);
+  } catch (const FileError&) {
+    throw;  // names the targets file (or the model file) already
+  } catch (const InputError& e) {
+    throw FileError(args.model, 0, e.what());  // about the model and what it can do
+  }
 }
 
 void add_evaluate_command(CLI::App& app) {

@@ -9,13 +9,9 @@
 #include "strategy_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
-#include "vrreg/correction/rrbc.hpp"
-#include "vrreg/io/file_error.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 #include "vrreg/io/model_json.hpp"
-#include "vrreg/metrics/noise.hpp"
-#include "vrreg/metrics/rigid_body.hpp"
-#include "vrreg/registration/robust.hpp"
+#include "vrreg/vrreg.hpp"
 
 namespace vrreg::cli {
 namespace {
@@ -37,108 +33,39 @@ void run_register_unchecked(const RegisterArgs& args);
 void run_register(const RegisterArgs& args) {
   try {
     run_register_unchecked(args);
-  } catch (const io::FileError&) {
+  } catch (const FileError&) {
     throw;  // already names file and line
   } catch (const InputError& e) {
     // Degenerate geometry and the like come from the library without a file name.
-    throw InputError(args.fiducials + ": " + e.what());
+    throw FileError(args.fiducials, 0, e.what());
   }
 }
 
-// The fiducials that built the registration, and the model.
-struct Registered {
-  RegistrationModel model;
-  RegistrationResult reg;
-  Points3 sensor;  ///< registered fiducials, sensor frame [m]
-  Points3 robot;   ///< and robot frame [m]
-  std::vector<std::string> rejected;
-};
-
-// Registers the fiducial rows (of one configuration with --config): no strategy, 1 or 2.
-Registered register_rows(const MeasurementSet& set, const RegisterArgs& args) {
-  const std::vector<std::size_t> rows = select_rows(set, Role::kFiducial, args.config);
-  Registered out;
-  out.sensor = set.sensor_points(rows);
-  out.robot = set.robot_points(rows);
-  RegistrationModel& model = out.model;
-  model.source = args.fiducials;
-  model.config = args.config;
-  model.interpolation = args.interpolation.apply(model.interpolation);
-
-  RegistrationOptions reg_options;
-  reg_options.estimate_scale = args.scale;
-  std::vector<std::size_t> kept = rows;
-  if (args.robust) {
-    RobustRegistrationOptions robust_options;
-    robust_options.registration = reg_options;
-    const RobustRegistrationResult r = register_rigid_robust(out.sensor, out.robot, robust_options);
-    VRREG_THROW_UNLESS(r.converged, args.fiducials << ": robust registration failed: " << r.message);
-    kept.clear();
-    std::size_t next_rejected = 0;
-    for (std::size_t k = 0; k < rows.size(); ++k) {
-      if (next_rejected < r.rejected.size() &&
-          r.rejected[next_rejected] == static_cast<Eigen::Index>(k)) {
-        out.rejected.push_back(set.locations[rows[k]].point);
-        ++next_rejected;
-      } else {
-        kept.push_back(rows[k]);
-      }
-    }
-    out.sensor = set.sensor_points(kept);
-    out.robot = set.robot_points(kept);
-  }
-  out.reg = register_rigid(out.sensor, out.robot, reg_options);
-  model.T_robot_sensor = out.reg.T_robot_sensor;
-  model.fre_m = out.reg.fre_m;
-  for (std::size_t i : kept) model.fiducials.push_back(set.locations[i]);
-  model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, out.sensor, out.robot);
-  return out;
-}
-
-// Strategy 3: one registration from the volume corners, corrections for every configuration.
-Registered register_volume(const MeasurementSet& set, const RegisterArgs& args) {
-  const std::string& method = args.interpolation.method;
-  VRREG_THROW_UNLESS(method.empty() || method == "octuplet",
-                     "--strategy 3 corrects with octuplets (--cube-mm), not --interpolation "
-                         << method);
-  RegistrationOptions reg_options;
-  reg_options.estimate_scale = args.scale;
-  Strategy3Model s3 = build_strategy3_model(
-      set, args.strategy.seed.value_or(1), joint_norm(args.strategy, nullptr), reg_options,
-      args.interpolation.apply(InterpolationSettings{}));
-  s3.model.source = args.fiducials;
-  return {std::move(s3.model), s3.registration, s3.registered_sensor_m, s3.registered_robot_m, {}};
+RegisterOptions register_options(const RegisterArgs& args) {
+  RegisterOptions options;
+  options.config = args.config;
+  options.registration.estimate_scale = args.scale;
+  if (args.robust) options.robust = RobustRegistrationOptions{};
+  if (args.sigma_rep_mm) options.sigma_rep_m = units::mm_to_m(*args.sigma_rep_mm);
+  options.interpolation = args.interpolation.settings();
+  options.procedure2 = register_procedure2(args.strategy);
+  return options;
 }
 
 void run_register_unchecked(const RegisterArgs& args) {
-  const int strategy = register_strategy(args.strategy, args.config, args.robust);
-  MeasurementSet set = io::read_measurement_csv(args.fiducials);
-  std::optional<planning::Strategy2Summary> relabelled;
-  if (strategy == 2) {
-    planning::Strategy2Result r = relabel_file(set, joint_norm(args.strategy, nullptr));
-    set = std::move(r.set);
-    relabelled = r.summary;
-  }
-  Registered registered = strategy == 3 ? register_volume(set, args) : register_rows(set, args);
-  RegistrationModel& model = registered.model;
-  const RegistrationResult& reg = registered.reg;
-  const std::vector<std::string>& rejected = registered.rejected;
-  const auto n_registered = static_cast<std::size_t>(registered.sensor.cols());
-  if (strategy == 1 || strategy == 2) {
-    model.procedure2.strategy = strategy;
-    model.procedure2.joint_norm = kinematics::to_string(joint_norm(args.strategy, nullptr));
-  }
-  const RigidBodyStatistics rb = rigid_body_statistics(registered.sensor, registered.robot);
-  model.sigma_l_m = rb.sigma_l_m;
-
-  std::vector<Location> kept_locations = model.fiducials;
-  const std::optional<double> sigma_opt = sigma_opt_m(kept_locations);
-  std::optional<double> sigma_noise;
-  if (sigma_opt || args.sigma_rep_mm) {
-    sigma_noise = sigma_noise_m(sigma_opt.value_or(0.0), units::mm_to_m(args.sigma_rep_mm.value_or(0.0)));
-  }
-  std::optional<double> rho_value;
-  if (sigma_noise && *sigma_noise > 0.0) rho_value = rho(rb.sigma_l_m, *sigma_noise);
+  const RegisterOptions options = register_options(args);
+  options.validate();  // flag combinations before reading the file
+  const RegisterResult result =
+      register_fiducials(io::read_measurement_csv(args.fiducials), options);
+  const RegistrationModel& model = result.model;
+  const RegistrationResult& reg = result.registration;
+  const RigidBodyStatistics& rb = result.rigid_body;
+  const std::vector<std::string>& rejected = result.rejected;
+  const std::optional<planning::Strategy2Summary>& relabelled = result.relabelled;
+  const std::size_t n_registered = result.n_registered;
+  const std::optional<double>& sigma_opt = result.noise.sigma_opt_m;
+  const std::optional<double>& sigma_noise = result.noise.sigma_noise_m;
+  const std::optional<double>& rho_value = result.noise.rho;
 
   if (!args.output.empty()) io::write_model_json(args.output, model);
 

@@ -10,11 +10,12 @@
 #include "strategy_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
-#include "vrreg/experiments/report_cell.hpp"
-#include "vrreg/experiments/report_reproduce.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/io/plan_csv.hpp"
+#include "vrreg/report/cell_report.hpp"
+#include "vrreg/report/reproduce_report.hpp"
+#include "vrreg/vrreg.hpp"
 
 namespace vrreg::cli {
 namespace {
@@ -33,34 +34,25 @@ struct ReportArgs {
 };
 
 // The cell page: the targets evaluated exactly as `vrreg evaluate` does.
-experiments::ReportPage cell_page(const ReportArgs& args) {
+report::ReportPage cell_page(const ReportArgs& args) {
   const RegistrationModel model = io::read_model_json(args.model);
-  const int strategy = evaluate_strategy(args.strategy, model, args.model);
-  MeasurementSet set = io::read_measurement_csv(args.targets);
-  std::string method;
-  if (strategy == 2) {
-    set = relabel_file(set, joint_norm(args.strategy, &model)).set;
+  EvaluateOptions options;
+  options.config = args.config;
+  options.interpolation = args.interpolation.choice();
+  apply_evaluate_flags(args.strategy, options);
+  EvaluateResult evaluation;
+  try {
+    evaluation = evaluate(model, io::read_measurement_csv(args.targets), options);
+  } catch (const FileError&) {
+    throw;
+  } catch (const InputError& e) {
+    throw FileError(args.model, 0, e.what());
   }
-  if (strategy > 0) {
-    method = "Strategy " + std::to_string(strategy) +
-             (strategy > 1 ? " (" + model.procedure2.joint_norm + " joint distance)" : "");
-  }
-  const std::optional<int> config = args.config ? args.config : model.config;
-  VRREG_THROW_UNLESS(strategy != 1 || config,
-                     args.model << ": --strategy 1 evaluates one configuration: give --config N");
-  const std::vector<std::size_t> rows = select_rows(set, Role::kTarget, config);
-  const InterpolationSettings settings = args.interpolation.apply(model.interpolation);
-  const TargetCorrection c =
-      strategy == 3
-          ? correct_strategy3(model, set, rows, settings, joint_norm(args.strategy, &model))
-          : correct_targets(model, set.sensor_points(rows), set.robot_points(rows), settings,
-                            source_lines(set, rows));
   std::optional<double> sigma_rep;
   if (args.sigma_rep_mm) sigma_rep = units::mm_to_m(*args.sigma_rep_mm);
-  const experiments::CellReportInput input{model,        set,    rows,   c,        args.model,
-                                           args.targets, config, method, sigma_rep};
-  const experiments::CellAnalysis analysis = experiments::analyze_cell(input);
-  return experiments::cell_report_page(input, analysis);
+  const report::CellReportInput input{model, evaluation, args.model, args.targets, sigma_rep};
+  const report::CellAnalysis analysis = report::analyze_cell(input);
+  return report::cell_report_page(input, analysis);
 }
 
 void run_report(const ReportArgs& args) {
@@ -70,11 +62,11 @@ void run_report(const ReportArgs& args) {
                      "(the paper's experiments)");
   VRREG_THROW_UNLESS(!cell || (!args.model.empty() && !args.targets.empty()),
                      "a cell report needs both --model and --targets");
-  experiments::ReportPage page;
+  report::ReportPage page;
   if (cell) {
     page = cell_page(args);
     if (!args.plan.empty()) {
-      page.sections.push_back(experiments::plan_section(io::read_plan_csv(args.plan), args.plan));
+      page.sections.push_back(report::plan_section(io::read_plan_csv(args.plan), args.plan));
     }
     write_report_html(page, args.output);
   } else {

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/experiments/report_reproduce.hpp"
+#include "vrreg/report/reproduce_report.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/plan_csv.hpp"
@@ -46,32 +46,32 @@ std::string read_plotly_js() {
   return text;
 }
 
-std::size_t write_report_html(const experiments::ReportPage& page, const std::string& out) {
-  const std::string html = experiments::render_report_html(page, read_plotly_js());
+std::size_t write_report_html(const report::ReportPage& page, const std::string& out) {
+  const std::string html = report::render_report_html(page, read_plotly_js());
   io::write_file_atomically(out, html);
   return html.size();
 }
 
-experiments::ReportPage write_reproduce_report(const nlohmann::json& reproduce,
+report::ReportPage write_reproduce_report(const nlohmann::json& reproduce,
                                                const std::string& source,
                                                const std::string& plan_csv,
                                                const std::string& out) {
   std::optional<io::PlanFile> plan;
   if (!plan_csv.empty()) plan = io::read_plan_csv(plan_csv);
-  experiments::ReportPage page =
-      experiments::reproduce_report_page(reproduce, source, plan, plan_csv);
+  report::ReportPage page =
+      report::reproduce_report_page(reproduce, source, plan, plan_csv);
   write_report_html(page, out);
   return page;
 }
 
-experiments::ReportPage write_reproduce_report(const std::string& dir, const std::string& plan_csv,
+report::ReportPage write_reproduce_report(const std::string& dir, const std::string& plan_csv,
                                                const std::string& out) {
   const std::string path = (std::filesystem::path(dir) / "reproduce.json").string();
   std::string text;
   if (!std::filesystem::is_regular_file(path) || !read_whole(path, text)) {
     throw io::FileError(path, 0, "cannot read it: run 'vrreg reproduce --out " + dir + "' first");
   }
-  return write_reproduce_report(experiments::parse_reproduce_json(text, path), path, plan_csv, out);
+  return write_reproduce_report(report::parse_reproduce_json(text, path), path, plan_csv, out);
 }
 
 }  // namespace vrreg::cli

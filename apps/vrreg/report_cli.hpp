@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "vrreg/experiments/report_page.hpp"
+#include "vrreg/report/page.hpp"
 
 namespace vrreg::cli {
 
@@ -22,15 +22,15 @@ std::string read_plotly_js();
 
 /// Writes `page` with the Plotly library inlined to `out`, whole or not at all; returns its size
 /// in bytes.
-std::size_t write_report_html(const experiments::ReportPage& page, const std::string& out);
+std::size_t write_report_html(const report::ReportPage& page, const std::string& out);
 
 /// The report of `vrreg reproduce --out DIR`: reads DIR/reproduce.json (docs/report.md) and, when
 /// `plan_csv` is not empty, a plan for Fig. 16. Returns the page written to `out`.
-experiments::ReportPage write_reproduce_report(const std::string& dir, const std::string& plan_csv,
+report::ReportPage write_reproduce_report(const std::string& dir, const std::string& plan_csv,
                                                const std::string& out);
 
 /// The same from a reproduce.json already in memory (`source` names it on the page).
-experiments::ReportPage write_reproduce_report(const nlohmann::json& reproduce,
+report::ReportPage write_reproduce_report(const nlohmann::json& reproduce,
                                                const std::string& source,
                                                const std::string& plan_csv, const std::string& out);
 

@@ -3,10 +3,7 @@
 #include <cstdio>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/io/file_error.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
-#include "vrreg/planning/strategy3_correction.hpp"
-#include "vrreg/planning/strategy3_registration.hpp"
 
 namespace vrreg::cli {
 
@@ -45,138 +42,27 @@ void StrategyFlags::add_to(CLI::App& command, bool for_register) {
   command.footer(kStrategyHelp);
 }
 
-void require_configurations(const MeasurementSet& set, int strategy) {
-  if (!set.has_config) {
-    throw io::FileError(set.source, 0,
-                        "--strategy " + std::to_string(strategy) +
-                            " needs a config column (the arm configuration of each row)");
-  }
-  if (set.n_joints == 0) {
-    throw io::FileError(set.source, 0,
-                        "--strategy " + std::to_string(strategy) +
-                            " needs joint columns (q1_rad..qN_rad or q1_deg..qN_deg)");
-  }
+planning::Procedure2 register_procedure2(const StrategyFlags& flags) {
+  planning::Procedure2 p;
+  p.strategy = planning::strategy_from_number(flags.strategy.value_or(0));
+  VRREG_THROW_UNLESS(flags.strategy.value_or(0) >= 2 || flags.joint_norm.empty(),
+                     "--joint-norm is for --strategy 2 or 3");
+  if (!flags.joint_norm.empty()) p.joint_norm = kinematics::parse_joint_norm(flags.joint_norm);
+  p.seed = flags.seed;
+  return p;
 }
 
-int register_strategy(const StrategyFlags& flags, const std::optional<int>& config, bool robust) {
-  const int s = flags.strategy.value_or(0);
-  VRREG_THROW_UNLESS((s != 1 && s != 2) || config,
-                     "--strategy " << s << " registers one configuration: give --config N");
-  VRREG_THROW_UNLESS(s != 3 || !config,
-                     "--strategy 3 registers every configuration at once; "
-                     "--config N selects targets in evaluate");
-  VRREG_THROW_UNLESS(s != 3 || !robust, "--robust is not available with --strategy 3");
-  VRREG_THROW_UNLESS(s == 3 || !flags.seed, "--seed is for --strategy 3");
-  VRREG_THROW_UNLESS(s >= 2 || flags.joint_norm.empty(), "--joint-norm is for --strategy 2 or 3");
-  return s;
-}
-
-int evaluate_strategy(const StrategyFlags& flags, const RegistrationModel& model,
-                      const std::string& model_path) {
-  const int built = model.procedure2.strategy;
-  const int s = flags.strategy.value_or(built);
-  if (s != built && !(s == 1 && built == 0)) {
-    throw io::FileError(
-        model_path, 0,
-        "the model was built with " +
-            (built == 0 ? std::string("no strategy") : "--strategy " + std::to_string(built)) +
-            ", not --strategy " + std::to_string(s) + ": register again with it");
-  }
-  VRREG_THROW_UNLESS(s >= 2 || flags.joint_norm.empty(), "--joint-norm is for strategies 2 and 3");
-  if (s == 2 && !flags.joint_norm.empty() && flags.joint_norm != model.procedure2.joint_norm) {
-    throw io::FileError(model_path, 0,
-                        "the model's Strategy 2 labels use --joint-norm " +
-                            model.procedure2.joint_norm + "; the targets must use the same");
-  }
-  return s;
-}
-
-kinematics::JointNorm joint_norm(const StrategyFlags& flags, const RegistrationModel* model) {
-  if (!flags.joint_norm.empty()) return kinematics::parse_joint_norm(flags.joint_norm);
-  if (model != nullptr) return kinematics::parse_joint_norm(model->procedure2.joint_norm);
-  return kinematics::JointNorm::kL2;
-}
-
-planning::Strategy2Result relabel_file(const MeasurementSet& set, kinematics::JointNorm norm) {
-  require_configurations(set, 2);
-  try {
-    return planning::relabel_strategy2(set, norm);
-  } catch (const io::FileError&) {
-    throw;
-  } catch (const InputError& e) {
-    throw io::FileError(set.source, 0, e.what());
-  }
-}
-
-Strategy3Model build_strategy3_model(const MeasurementSet& set, std::uint64_t seed,
-                                     kinematics::JointNorm norm,
-                                     const RegistrationOptions& registration,
-                                     const InterpolationSettings& interpolation) {
-  require_configurations(set, 3);
-  Strategy3Model out;
-  RegistrationModel& model = out.model;
-  for (const std::size_t i : set.select(Role::kFiducial))
-    model.fiducials.push_back(set.locations[i]);
-  planning::Strategy3Options options;
-  options.seed = seed;
-  options.match_tolerance_m = interpolation.match_tolerance_m;
-  options.registration = registration;
-  planning::Strategy3Registration r;
-  try {
-    r = planning::register_volume_corners(model.fiducials, options);
-  } catch (const InputError& e) {
-    throw io::FileError(set.source, 0, e.what());
-  }
-  out.registration = r.registration;
-  out.registered_sensor_m.resize(3, 8);
-  out.registered_robot_m.resize(3, 8);
-  for (std::size_t c = 0; c < 8; ++c) {
-    const Location& f = model.fiducials[r.corner_fiducials[c]];
-    out.registered_sensor_m.col(static_cast<Eigen::Index>(c)) = f.sensor_m;
-    out.registered_robot_m.col(static_cast<Eigen::Index>(c)) = f.robot_m;
-    model.procedure2.registration_fiducials.push_back(r.corner_fiducials[c]);
-  }
-  model.T_robot_sensor = r.registration.T_robot_sensor;
-  model.fre_m = r.registration.fre_m;
-  model.corrections_sensor_m = r.corrections_sensor_m;
-  model.interpolation = interpolation;
-  model.source = set.source;
-  model.procedure2.strategy = 3;
-  model.procedure2.joint_norm = kinematics::to_string(norm);
-  model.procedure2.seed = seed;
-  return out;
-}
-
-TargetCorrection correct_strategy3(const RegistrationModel& model, const MeasurementSet& set,
-                                   const std::vector<std::size_t>& rows,
-                                   const InterpolationSettings& settings,
-                                   kinematics::JointNorm norm) {
-  require_configurations(set, 3);
-  if (settings.method != InterpolationMethod::kOctuplet &&
-      settings.method != InterpolationMethod::kAuto) {
-    throw io::FileError(set.source, 0,
-                        std::string("--strategy 3 corrects with octuplets, not --interpolation ") +
-                            to_string(settings.method));
-  }
-  planning::Strategy3CorrectionOptions options;
-  options.cube_edge_m = settings.cube_edge_m;
-  options.match_tolerance_m = settings.match_tolerance_m;
-  options.norm = norm;
-  std::vector<Location> targets;
-  targets.reserve(rows.size());
-  for (const std::size_t i : rows) targets.push_back(set.locations[i]);
-  try {
-    return planning::correct_targets_strategy3(model, targets, options);
-  } catch (const InputError& e) {
-    throw io::FileError(set.source, 0, e.what());
-  }
+void apply_evaluate_flags(const StrategyFlags& flags, EvaluateOptions& options) {
+  if (flags.strategy) options.strategy = planning::strategy_from_number(*flags.strategy);
+  if (!flags.joint_norm.empty()) options.joint_norm = kinematics::parse_joint_norm(flags.joint_norm);
 }
 
 void add_strategy_json(nlohmann::json& j, const RegistrationModel& model,
                        const std::optional<planning::Strategy2Summary>& relabelled) {
-  const ConfigurationStrategy& p = model.procedure2;
-  j["strategy"] = p.strategy == 0 ? nlohmann::json(nullptr) : nlohmann::json(p.strategy);
-  if (p.strategy >= 2) j["joint_norm"] = p.joint_norm;
+  const planning::Procedure2& p = model.procedure2;
+  const int strategy = planning::strategy_number(p.strategy);
+  j["strategy"] = strategy == 0 ? nlohmann::json(nullptr) : nlohmann::json(strategy);
+  if (strategy >= 2) j["joint_norm"] = kinematics::to_string(p.joint_norm);
   if (relabelled) {
     // switched_fraction is the paper's figure (section 5.2: "14 % of nominal locations"): the
     // share of nominal points with any configuration relabelled.
@@ -188,7 +74,7 @@ void add_strategy_json(nlohmann::json& j, const RegistrationModel& model,
     j["n_switched_locations"] = relabelled->n_switched;
     j["n_locations"] = relabelled->n_locations;
   }
-  if (p.strategy == 3) {
+  if (strategy == 3) {
     j["seed"] = p.seed ? nlohmann::json(*p.seed) : nlohmann::json(nullptr);
     std::vector<std::string> names;
     for (const std::size_t f : p.registration_fiducials) {
@@ -201,12 +87,13 @@ void add_strategy_json(nlohmann::json& j, const RegistrationModel& model,
 
 void print_strategy(const RegistrationModel& model,
                     const std::optional<planning::Strategy2Summary>& relabelled) {
-  const ConfigurationStrategy& p = model.procedure2;
-  if (p.strategy == 1) {
+  const planning::Procedure2& p = model.procedure2;
+  const int strategy = planning::strategy_number(p.strategy);
+  if (strategy == 1) {
     std::printf("  strategy 1                    configuration labels as listed in the file\n");
-  } else if (p.strategy == 2) {
+  } else if (strategy == 2) {
     std::printf("  strategy 2                    labels along the visiting path (%s)",
-                p.joint_norm.c_str());
+                kinematics::to_string(p.joint_norm));
     if (relabelled) {
       std::printf(": %d of %d points (%.1f %%) and %d of %d locations (%.1f %%) switched",
                   relabelled->n_switched_points, relabelled->n_points,
@@ -220,7 +107,7 @@ void print_strategy(const RegistrationModel& model,
       if (!relabelled->switched_by_file_label.empty()) std::printf(")");
     }
     std::printf("\n");
-  } else if (p.strategy == 3) {
+  } else if (strategy == 3) {
     std::printf(
         "  strategy 3                    one registration from the volume corners, seed %llu:\n",
         static_cast<unsigned long long>(p.seed.value_or(0)));
@@ -231,7 +118,7 @@ void print_strategy(const RegistrationModel& model,
     std::printf(
         "\n  corrections for               %zu fiducials in every configuration "
         "(nearest to each target's by %s)\n",
-        model.fiducials.size(), p.joint_norm.c_str());
+        model.fiducials.size(), kinematics::to_string(p.joint_norm));
   }
 }
 

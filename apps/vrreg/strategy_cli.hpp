@@ -1,6 +1,6 @@
 #pragma once
 // Procedure 2 (paper section 4.4) on the command line: the --strategy, --joint-norm and --seed
-// flags of register and evaluate, and the glue from files to the planning library.
+// flags of register and evaluate, and how the strategy is printed.
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -9,11 +9,10 @@
 #include <vector>
 
 #include "vrreg/core/measurement.hpp"
-#include "vrreg/core/model.hpp"
-#include "vrreg/correction/correct_targets.hpp"
-#include "vrreg/kinematics/joint_distance.hpp"
+#include "vrreg/pipeline/evaluate.hpp"
+#include "vrreg/pipeline/model.hpp"
+#include "vrreg/planning/procedure2.hpp"
 #include "vrreg/planning/strategy2_labels.hpp"
-#include "vrreg/registration/rigid.hpp"
 
 namespace vrreg::cli {
 
@@ -26,39 +25,12 @@ struct StrategyFlags {
   void add_to(CLI::App& command, bool for_register);
 };
 
-/// What register --strategy 3 builds: the model and its registration from the volume corners.
-struct Strategy3Model {
-  RegistrationModel model;  ///< all fiducials in all configurations, epsilon vs one {R, tau}
-  RegistrationResult registration;  ///< from the 8 volume-corner fiducials
-  Points3 registered_sensor_m;      ///< those 8 fiducials, sensor frame [m]
-  Points3 registered_robot_m;       ///< and robot frame [m]
-};
+/// Register's Procedure 2 options from the flags (flag combinations that only make sense on the
+/// command line are checked here; the library checks the rest).
+planning::Procedure2 register_procedure2(const StrategyFlags& flags);
 
-/// Throws InputError naming `set.source` unless it has a config column and joint columns.
-void require_configurations(const MeasurementSet& set, int strategy);
-
-/// Checks register's flag combination; returns the strategy (0 when not given).
-int register_strategy(const StrategyFlags& flags, const std::optional<int>& config, bool robust);
-/// Checks evaluate's flags against the model (built with strategy s); returns the strategy used.
-int evaluate_strategy(const StrategyFlags& flags, const RegistrationModel& model,
-                      const std::string& model_path);
-/// The joint norm: the flag, else the model's (evaluate), else l2.
-kinematics::JointNorm joint_norm(const StrategyFlags& flags, const RegistrationModel* model);
-
-/// Strategy 2 labels for the whole file; errors name the file.
-planning::Strategy2Result relabel_file(const MeasurementSet& set, kinematics::JointNorm norm);
-
-/// Strategy 3 model from every fiducial of `set` (errors name the file).
-Strategy3Model build_strategy3_model(const MeasurementSet& set, std::uint64_t seed,
-                                     kinematics::JointNorm norm,
-                                     const RegistrationOptions& registration,
-                                     const InterpolationSettings& interpolation);
-
-/// Strategy 3 correction of the target `rows` of `set` (errors name the file).
-TargetCorrection correct_strategy3(const RegistrationModel& model, const MeasurementSet& set,
-                                   const std::vector<std::size_t>& rows,
-                                   const InterpolationSettings& settings,
-                                   kinematics::JointNorm norm);
+/// Evaluate's strategy and joint-norm options from the flags (unset: the model's).
+void apply_evaluate_flags(const StrategyFlags& flags, EvaluateOptions& options);
 
 /// Adds "strategy" (null without one) and, per strategy, "joint_norm", "switched_fraction" (=
 /// "switched_points_fraction", the paper's), "switched_locations_fraction" and their counts (2:

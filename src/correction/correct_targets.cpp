@@ -18,27 +18,29 @@ namespace {
 
 constexpr Eigen::Index kParallelGrain = 4096;  // targets per task; fewer run serially
 
-void check_inputs(const RegistrationModel& model, const ConstPoints3Ref& targets_sensor_m,
+void check_inputs(const CorrectionField& field, const ConstPoints3Ref& targets_sensor_m,
                   const ConstPoints3Ref& targets_robot_nominal_m,
                   const InterpolationSettings& settings) {
-  const auto n_fiducials = static_cast<Eigen::Index>(model.fiducials.size());
+  const Eigen::Index n_fiducials = field.fiducials_robot_m.cols();
   VRREG_THROW_UNLESS(n_fiducials > 0, "the model has no fiducials to correct with");
-  VRREG_THROW_UNLESS(model.corrections_sensor_m.cols() == n_fiducials,
-                     "the model has " << model.corrections_sensor_m.cols()
+  VRREG_THROW_UNLESS(field.corrections_sensor_m.cols() == n_fiducials,
+                     "the model has " << field.corrections_sensor_m.cols()
                                       << " fiducial corrections for " << n_fiducials
                                       << " fiducials");
-  VRREG_THROW_UNLESS(model.corrections_sensor_m.allFinite(),
+  VRREG_THROW_UNLESS(field.corrections_sensor_m.allFinite(),
                      "the model's fiducial corrections are not all finite");
-  const RigidTransform& T = model.T_robot_sensor;
+  const RigidTransform& T = field.T_robot_sensor;
   VRREG_THROW_UNLESS(T.rotation.allFinite() && T.translation_m.allFinite() &&
                          std::isfinite(T.scale) && T.scale > 0.0,
                      "the model's transform is not finite (scale " << T.scale << ")");
-  for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
-    const Location& fiducial = model.fiducials[j];
-    VRREG_THROW_UNLESS(
-        fiducial.has_robot && fiducial.robot_m.allFinite(),
-        "fiducial " << j << " ('" << fiducial.point << "') has no finite nominal robot position");
+  for (Eigen::Index j = 0; j < n_fiducials; ++j) {
+    VRREG_THROW_UNLESS(field.fiducials_robot_m.col(j).allFinite(),
+                       "fiducial " << j << " has no finite nominal robot position");
   }
+  VRREG_THROW_UNLESS(field.fiducials_sequence.empty() ||
+                         field.fiducials_sequence.size() == static_cast<std::size_t>(n_fiducials),
+                     "got " << field.fiducials_sequence.size() << " sequence numbers for "
+                            << n_fiducials << " fiducials");
   VRREG_THROW_UNLESS(targets_sensor_m.allFinite(),
                      "the targets' sensor coordinates are not all finite");
   VRREG_THROW_UNLESS(targets_robot_nominal_m.cols() == 0 ||
@@ -53,18 +55,15 @@ void check_inputs(const RegistrationModel& model, const ConstPoints3Ref& targets
 
 }  // namespace
 
-TargetCorrection correct_targets(const RegistrationModel& model,
+TargetCorrection correct_targets(const CorrectionField& field,
                                  const ConstPoints3Ref& targets_sensor_m,
                                  const ConstPoints3Ref& targets_robot_nominal_m,
                                  const InterpolationSettings& settings,
                                  const std::vector<std::size_t>& targets_sequence) {
-  check_inputs(model, targets_sensor_m, targets_robot_nominal_m, settings);
+  check_inputs(field, targets_sensor_m, targets_robot_nominal_m, settings);
   const Eigen::Index n = targets_sensor_m.cols();
   const double tolerance_m = settings.match_tolerance_m;
-  Points3 fiducials_robot_m(3, static_cast<Eigen::Index>(model.fiducials.size()));
-  for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
-    fiducials_robot_m.col(static_cast<Eigen::Index>(j)) = model.fiducials[j].robot_m;
-  }
+  const Points3& fiducials_robot_m = field.fiducials_robot_m;
 
   // Build the interpolator once; `stencil_of(i)` then only reads it (safe in parallel).
   TargetCorrection out;
@@ -94,12 +93,10 @@ TargetCorrection correct_targets(const RegistrationModel& model,
                               << " targets");
     std::vector<std::size_t> fiducial_sequence;
     const bool sequenced =
-        !targets_sequence.empty() &&
-        std::all_of(model.fiducials.begin(), model.fiducials.end(),
-                    [](const Location& f) { return f.source_line > 0; });
-    if (sequenced) {
-      for (const Location& f : model.fiducials) fiducial_sequence.push_back(f.source_line);
-    }
+        !targets_sequence.empty() && !field.fiducials_sequence.empty() &&
+        std::all_of(field.fiducials_sequence.begin(), field.fiducials_sequence.end(),
+                    [](std::size_t line) { return line > 0; });
+    if (sequenced) fiducial_sequence = field.fiducials_sequence;
     octuplet.emplace(fiducials_robot_m, settings.cube_edge_m, tolerance_m,
                      std::move(fiducial_sequence));
     out.layout = octuplet->describe();
@@ -109,7 +106,7 @@ TargetCorrection correct_targets(const RegistrationModel& model,
   }
   out.method_used = method;
 
-  const RigidTransform& T_robot_sensor = model.T_robot_sensor;
+  const RigidTransform& T_robot_sensor = field.T_robot_sensor;
   out.stencils.resize(static_cast<std::size_t>(n));
   out.corrections_sensor_m = Points3::Zero(3, n);
   out.corrected_sensor_m.resize(3, n);
@@ -132,7 +129,7 @@ TargetCorrection correct_targets(const RegistrationModel& model,
       out.uncorrected_robot_m.col(i) = registered_robot_m;
       if (stencil.status == StencilStatus::kOk) {
         const Eigen::Vector3d correction_m =  // Eq. 7
-            interpolate_correction(stencil, model.corrections_sensor_m);
+            interpolate_correction(stencil, field.corrections_sensor_m);
         out.corrections_sensor_m.col(i) = correction_m;
         out.corrected_sensor_m.col(i) = target_sensor_m + correction_m;  // Eq. 8
         out.corrected_robot_m.col(i) =

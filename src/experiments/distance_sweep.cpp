@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/core/model.hpp"
+#include "vrreg/pipeline/model.hpp"
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/correction/rrbc.hpp"
 #include "vrreg/experiments/table1.hpp"
@@ -72,6 +72,8 @@ DistanceSweep run_distance_sweep(const MeasurementSet& set, const DistanceSweepO
   for (const std::size_t i : fid) model.fiducials.push_back(set.locations[i]);
   model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, fid_sensor, fid_robot);
 
+  const CorrectionField field = model.correction_field();
+
   const Points3 tgt_sensor = set.sensor_points(tgt);
   const Points3 tgt_robot = set.robot_points(tgt);
   out.target_robot_m = tgt_robot;
@@ -90,7 +92,7 @@ DistanceSweep run_distance_sweep(const MeasurementSet& set, const DistanceSweepO
     settings.method = InterpolationMethod::kOctuplet;
     settings.cube_edge_m = a;
     settings.match_tolerance_m = options.match_tolerance_m;
-    const TargetCorrection c = correct_targets(model, tgt_sensor, tgt_robot, settings, sequence);
+    const TargetCorrection c = correct_targets(field, tgt_sensor, tgt_robot, settings, sequence);
     SweepStep step;
     step.cube_edge_m = a;
     step.d_m = octuplet_distance_m(a);

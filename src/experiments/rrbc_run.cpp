@@ -20,14 +20,13 @@ RrbcRunFigures run_rrbc(const MeasurementSet& set, const std::vector<std::size_t
   const Points3 tgt_sensor = set.sensor_points(targets);
   const Points3 tgt_robot = set.robot_points(targets);
 
-  RegistrationModel model;
-  model.source = set.source;
   const RegistrationResult reg = register_rigid(fid_sensor, fid_robot);
-  model.T_robot_sensor = reg.T_robot_sensor;
-  model.fre_m = reg.fre_m;
-  for (std::size_t i : fiducials) model.fiducials.push_back(set.locations[i]);
-  model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, fid_sensor, fid_robot);
-  model.interpolation = options.interpolation;
+  CorrectionField field;  // no visiting order: corners measured once (datasets A1, A2, KUKA)
+  field.T_robot_sensor = reg.T_robot_sensor;
+  field.fiducials_robot_m = fid_robot;
+  field.corrections_sensor_m = fiducial_corrections(reg.T_robot_sensor, fid_sensor, fid_robot);
+  std::vector<Location> fiducial_locations;
+  for (std::size_t i : fiducials) fiducial_locations.push_back(set.locations[i]);
 
   RrbcRunFigures f;
   f.n_fiducials = static_cast<int>(fiducials.size());
@@ -39,12 +38,14 @@ RrbcRunFigures run_rrbc(const MeasurementSet& set, const std::vector<std::size_t
       f.l_histogram = l_histogram(fid_sensor, fid_robot, options.l_histogram_bin_m, stats);
     }
   }
-  f.sigma_opt_m =
-      options.sigma_opt_m ? *options.sigma_opt_m : sigma_opt_m(model.fiducials).value_or(0.0);
-  f.sigma_noise_m = sigma_noise_m(f.sigma_opt_m, options.sigma_rep_m);
-  if (f.sigma_noise_m > 0.0) f.rho = rho(f.sigma_l_m, f.sigma_noise_m);
+  const NoiseFigures noise = noise_figures(
+      options.sigma_opt_m ? options.sigma_opt_m : sigma_opt_m(fiducial_locations),
+      options.sigma_rep_m, f.sigma_l_m);  // Eq. 9
+  f.sigma_opt_m = noise.sigma_opt_m.value_or(0.0);
+  f.sigma_noise_m = noise.sigma_noise_m.value_or(0.0);
+  f.rho = noise.rho.value_or(0.0);
 
-  const TargetCorrection c = correct_targets(model, tgt_sensor, tgt_robot, options.interpolation);
+  const TargetCorrection c = correct_targets(field, tgt_sensor, tgt_robot, options.interpolation);
   const Eigen::VectorXd unc = point_errors(c.uncorrected_robot_m, tgt_robot);
   const Eigen::VectorXd cor = point_errors(c.corrected_robot_m, tgt_robot);
   const ImprovementSummary s = summarize_improvement(unc, cor);

@@ -4,7 +4,7 @@
 #include <set>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/core/model.hpp"
+#include "vrreg/pipeline/model.hpp"
 #include "vrreg/metrics/errors.hpp"
 #include "vrreg/metrics/improvement.hpp"
 #include "vrreg/metrics/noise.hpp"
@@ -57,7 +57,8 @@ Table2Entry strategy3(const MeasurementSet& set, int config, const RegistrationM
   correction.cube_edge_m = o.cube_edge_m;
   correction.match_tolerance_m = o.match_tolerance_m;
   correction.norm = o.norm;
-  const TargetCorrection c = planning::correct_targets_strategy3(model, targets, correction);
+  const TargetCorrection c = planning::correct_targets_strategy3(model.T_robot_sensor, model.fiducials,
+                                               model.corrections_sensor_m, targets, correction);
   const Points3& robot = e.target_robot_m;
   RrbcRunFigures& f = e.figures;
   f.n_fiducials = 8;

@@ -12,6 +12,7 @@
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/model_json.hpp"
+#include "vrreg/kinematics/configuration_order.hpp"
 
 namespace vrreg::io {
 namespace {
@@ -119,18 +120,20 @@ Location read_fiducial(const json& item, const std::string& path, const detail::
 }
 
 // Procedure 2 settings (paper section 4.4); absent in models built without a strategy.
-ConfigurationStrategy read_procedure2(const json& doc, const detail::JsonFields& f,
-                                      std::size_t n_fiducials) {
-  ConfigurationStrategy p;
+planning::Procedure2 read_procedure2(const json& doc, const detail::JsonFields& f,
+                                     std::size_t n_fiducials) {
+  planning::Procedure2 p;
   if (!doc.contains("procedure2")) return p;
   const json& item = f.member(doc, "", "procedure2");
   f.require_object(item, "procedure2");
-  p.strategy = f.integer(item, "procedure2", "strategy");
-  if (p.strategy < 0 || p.strategy > 3) f.fail("procedure2.strategy", "expected 0, 1, 2 or 3");
-  p.joint_norm = f.string(item, "procedure2", "joint_norm");
-  if (p.joint_norm != "l2" && p.joint_norm != "linf") {
+  const int strategy = f.integer(item, "procedure2", "strategy");
+  if (strategy < 0 || strategy > 3) f.fail("procedure2.strategy", "expected 0, 1, 2 or 3");
+  p.strategy = planning::strategy_from_number(strategy);
+  const std::string norm = f.string(item, "procedure2", "joint_norm");
+  if (norm != "l2" && norm != "linf") {
     f.fail("procedure2.joint_norm", "expected \"l2\" or \"linf\"");
   }
+  p.joint_norm = kinematics::parse_joint_norm(norm);
   if (item.contains("seed")) {
     const json& seed = item.at("seed");
     if (!seed.is_number_unsigned()) f.fail("procedure2.seed", "expected an integer >= 0");
@@ -166,6 +169,10 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
   if (model.fre_m < 0.0) f.fail("fre_mm", "negative");
   if (model.sigma_l_m < 0.0) f.fail("sigma_l_mm", "negative");
   model.config = f.optional_integer(doc, "", "config");
+  if (doc.contains("sigma_rep_mm")) {
+    model.sigma_rep_m = f.number(doc, "", "sigma_rep_mm") / kMmPerM;
+    if (*model.sigma_rep_m < 0.0) f.fail("sigma_rep_mm", "negative");
+  }
   model.source = f.string(doc, "", "source");
   const json& interp = f.member(doc, "", "interpolation");
   const std::string method = f.string(interp, "interpolation", "method");

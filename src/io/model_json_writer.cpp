@@ -53,10 +53,10 @@ json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m) {
 
 // Procedure 2 (paper section 4.4): written only for models built with a strategy.
 json procedure2_json(const RegistrationModel& model) {
-  const ConfigurationStrategy& p = model.procedure2;
+  const planning::Procedure2& p = model.procedure2;
   json out = json::object();
-  out["strategy"] = p.strategy;
-  out["joint_norm"] = p.joint_norm;
+  out["strategy"] = planning::strategy_number(p.strategy);
+  out["joint_norm"] = kinematics::to_string(p.joint_norm);
   if (p.seed) out["seed"] = *p.seed;
   if (!p.registration_fiducials.empty()) {
     for (const std::size_t j : p.registration_fiducials) {
@@ -91,8 +91,9 @@ std::string format_model_json(const RegistrationModel& model) {
   out["scale"] = finite(T.scale, "scale");
   out["fre_mm"] = finite(units::m_to_mm(model.fre_m), "fre_mm");
   out["sigma_l_mm"] = finite(units::m_to_mm(model.sigma_l_m), "sigma_l_mm");
+  if (model.sigma_rep_m) out["sigma_rep_mm"] = finite(units::m_to_mm(*model.sigma_rep_m), "sigma_rep_mm");
   out["config"] = optional_int(model.config);
-  if (model.procedure2.strategy != 0) out["procedure2"] = procedure2_json(model);
+  if (model.procedure2.strategy != planning::Strategy::kNone) out["procedure2"] = procedure2_json(model);
   out["source"] = model.source;
   out["interpolation"] = {
       {"method", to_string(model.interpolation.method)},

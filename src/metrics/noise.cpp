@@ -31,4 +31,14 @@ double rho(double sigma_l, double sigma_noise) {
   return sigma_l / sigma_noise;
 }
 
+NoiseFigures noise_figures(std::optional<double> sigma_opt, std::optional<double> sigma_rep,
+                           double sigma_l) {
+  NoiseFigures f;
+  f.sigma_opt_m = sigma_opt;
+  f.sigma_rep_m = sigma_rep;
+  if (sigma_opt || sigma_rep) f.sigma_noise_m = sigma_noise_m(sigma_opt.value_or(0.0), sigma_rep.value_or(0.0));
+  if (f.sigma_noise_m && *f.sigma_noise_m > 0.0) f.rho = rho(sigma_l, *f.sigma_noise_m);
+  return f;
+}
+
 }  // namespace vrreg

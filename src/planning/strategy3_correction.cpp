@@ -76,14 +76,16 @@ std::vector<Stencil> nearest_configuration_stencils(const std::vector<Location>&
   return out;
 }
 
-TargetCorrection correct_targets_strategy3(const RegistrationModel& model,
+TargetCorrection correct_targets_strategy3(const RigidTransform& T_robot_sensor,
+                                           const std::vector<Location>& fiducials,
+                                           const ConstPoints3Ref& corrections_sensor_m,
                                            const std::vector<Location>& targets,
                                            const Strategy3CorrectionOptions& options) {
-  VRREG_THROW_UNLESS(!model.fiducials.empty(), "the model has no fiducials to correct with");
+  VRREG_THROW_UNLESS(!fiducials.empty(), "the model has no fiducials to correct with");
   VRREG_THROW_UNLESS(
-      model.corrections_sensor_m.cols() == static_cast<Eigen::Index>(model.fiducials.size()),
-      "the model has " << model.corrections_sensor_m.cols() << " fiducial corrections for "
-                       << model.fiducials.size() << " fiducials");
+      corrections_sensor_m.cols() == static_cast<Eigen::Index>(fiducials.size()),
+      "the model has " << corrections_sensor_m.cols() << " fiducial corrections for "
+                       << fiducials.size() << " fiducials");
   TargetCorrection out;
   out.method_used = InterpolationMethod::kOctuplet;
   std::ostringstream layout;
@@ -91,18 +93,18 @@ TargetCorrection correct_targets_strategy3(const RegistrationModel& model,
          << " mm, each corner in the configuration nearest the target's ("
          << kinematics::to_string(options.norm) << ")";
   out.layout = layout.str();
-  out.stencils = nearest_configuration_stencils(model.fiducials, targets, options);
+  out.stencils = nearest_configuration_stencils(fiducials, targets, options);
   const auto n = static_cast<Eigen::Index>(targets.size());
   out.corrections_sensor_m = Points3::Zero(3, n);
   out.corrected_sensor_m.resize(3, n);
   out.corrected_robot_m.resize(3, n);
   out.uncorrected_robot_m.resize(3, n);
-  const RigidTransform& T = model.T_robot_sensor;
+  const RigidTransform& T = T_robot_sensor;
   for (Eigen::Index i = 0; i < n; ++i) {
     const Location& target = targets[static_cast<std::size_t>(i)];
     const Stencil& s = out.stencils[static_cast<std::size_t>(i)];
     if (s.status == StencilStatus::kOk) {
-      out.corrections_sensor_m.col(i) = interpolate_correction(s, model.corrections_sensor_m);
+      out.corrections_sensor_m.col(i) = interpolate_correction(s, corrections_sensor_m);
     } else {
       ++out.n_flagged;
     }

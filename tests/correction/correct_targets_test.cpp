@@ -27,20 +27,17 @@ Eigen::Vector3d robot_error_m(const Eigen::Vector3d& p) {
                          2e-4 * std::sin(25.0 * p.x() + 9.0 * p.y()) + 5e-4 * p.y());
 }
 
-/// A model whose fiducials at fiducials_robot_m are measured with robot_error_m through T.
-RegistrationModel make_model(const Points3& fiducials_robot_m,
-                             const RigidTransform& T_robot_sensor) {
-  RegistrationModel model;
+/// A correction field whose fiducials at fiducials_robot_m are measured with robot_error_m
+/// through T.
+CorrectionField make_model(const Points3& fiducials_robot_m, const RigidTransform& T_robot_sensor) {
+  CorrectionField model;
   model.T_robot_sensor = T_robot_sensor;
+  model.fiducials_robot_m = fiducials_robot_m;
   Points3 sensor(3, fiducials_robot_m.cols());
   const RigidTransform T_sensor_robot = T_robot_sensor.inverse();
   for (Eigen::Index j = 0; j < fiducials_robot_m.cols(); ++j) {
-    Location f;
-    f.point = "F" + std::to_string(j);
-    f.robot_m = fiducials_robot_m.col(j);
-    f.sensor_m = T_sensor_robot.apply(Eigen::Vector3d(f.robot_m + robot_error_m(f.robot_m)));
-    sensor.col(j) = f.sensor_m;
-    model.fiducials.push_back(f);
+    const Eigen::Vector3d robot_m = fiducials_robot_m.col(j);
+    sensor.col(j) = T_sensor_robot.apply(Eigen::Vector3d(robot_m + robot_error_m(robot_m)));
   }
   model.corrections_sensor_m = fiducial_corrections(T_robot_sensor, sensor, fiducials_robot_m);
   return model;
@@ -72,7 +69,7 @@ class CorrectTargets : public ::testing::Test {
   Random rng{53};
   RigidTransform T = random_transform(rng, 1.5);
   testing::A1Layout a1 = a1_layout();
-  RegistrationModel model = make_model(a1.fiducials_robot_m, T);
+  CorrectionField model = make_model(a1.fiducials_robot_m, T);
   Points3 targets_sensor = measure(a1.targets_robot_m, T);
 };
 
@@ -133,9 +130,11 @@ TEST_F(CorrectTargets, ExactAtFiducials) {
       EXPECT_EIGEN_NEAR(c.corrections_sensor_m.col(j), model.corrections_sensor_m.col(j), 1e-15);
     }
   }
-  Points3 measured(3, static_cast<Eigen::Index>(model.fiducials.size()));
-  for (std::size_t j = 0; j < model.fiducials.size(); ++j)
-    measured.col(static_cast<Eigen::Index>(j)) = model.fiducials[j].sensor_m;
+  Points3 measured(3, model.fiducials_robot_m.cols());
+  for (Eigen::Index j = 0; j < measured.cols(); ++j) {
+    const Eigen::Vector3d robot_m = a1.fiducials_robot_m.col(j);
+    measured.col(j) = T.inverse().apply(Eigen::Vector3d(robot_m + robot_error_m(robot_m)));
+  }
   EXPECT_EIGEN_NEAR(T.apply_all(measured + model.corrections_sensor_m), a1.fiducials_robot_m,
                     1e-12);
 }
@@ -148,7 +147,7 @@ TEST_F(CorrectTargets, CorrectedErrorFallsWithGridSpacing) {
   double previous = std::numeric_limits<double>::infinity();
   for (const int n : {3, 5, 9, 17}) {
     const double h = 0.2 / (n - 1);
-    const RegistrationModel m = make_model(grid_points(n, n, n, Eigen::Vector3d::Constant(h)), T);
+    const CorrectionField m = make_model(grid_points(n, n, n, Eigen::Vector3d::Constant(h)), T);
     const TargetCorrection c =
         correct_targets(m, sensor, Points3(3, 0), with(InterpolationMethod::kGrid));
     ASSERT_EQ(c.n_flagged, 0);
@@ -182,7 +181,7 @@ TEST_F(CorrectTargets, FlagsTargetsOutsideAndKeepsTheirUncorrectedMapping) {
 
 TEST_F(CorrectTargets, AutoFallsBackToScatteredAndGridRequestThrows) {
   Random points_rng(61);
-  const RegistrationModel random_model = make_model(random_points(points_rng, 200, 0.1), T);
+  const CorrectionField random_model = make_model(random_points(points_rng, 200, 0.1), T);
   const Points3 sensor = measure(random_points(points_rng, 20, 0.02), T);
   const TargetCorrection c =
       correct_targets(random_model, sensor, Points3(3, 0), with(InterpolationMethod::kAuto));
@@ -211,15 +210,15 @@ TEST_F(CorrectTargets, RejectsUnusableInput) {
   nan(0, 7) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW((void)correct_targets(model, nan, none, with(InterpolationMethod::kGrid)),
                InputError);
-  RegistrationModel short_model = model;
+  CorrectionField short_model = model;
   short_model.corrections_sensor_m = model.corrections_sensor_m.leftCols(10);
   EXPECT_THROW(
       (void)correct_targets(short_model, targets_sensor, none, with(InterpolationMethod::kAuto)),
       InputError);
-  RegistrationModel flat = make_model(grid_points(5, 5, 1, Eigen::Vector3d::Constant(0.02)), T);
+  CorrectionField flat = make_model(grid_points(5, 5, 1, Eigen::Vector3d::Constant(0.02)), T);
   EXPECT_THROW((void)correct_targets(flat, targets_sensor, none, with(InterpolationMethod::kAuto)),
                InputError);
-  RegistrationModel empty;
+  CorrectionField empty;
   EXPECT_THROW((void)correct_targets(empty, targets_sensor, none, with(InterpolationMethod::kAuto)),
                InputError);
 }
@@ -227,7 +226,7 @@ TEST_F(CorrectTargets, RejectsUnusableInput) {
 TEST_F(CorrectTargets, ScaleIsApplied) {
   RigidTransform scaled = T;
   scaled.scale = 1.002;
-  const RegistrationModel m = make_model(a1.fiducials_robot_m, scaled);
+  const CorrectionField m = make_model(a1.fiducials_robot_m, scaled);
   const Points3 sensor = measure(a1.targets_robot_m, scaled);
   const TargetCorrection c =
       correct_targets(m, sensor, Points3(3, 0), with(InterpolationMethod::kGrid));

@@ -36,17 +36,10 @@ Outcome run(double spacing_m, const CartesianErrorField& field, const RigidTrans
     return sensor;
   };
   const Points3 fid_sensor = measure(fid_robot);
-  RegistrationModel model;
+  CorrectionField model;
   model.T_robot_sensor = register_rigid(fid_sensor, fid_robot).T_robot_sensor;
   model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, fid_sensor, fid_robot);
-  for (Eigen::Index q = 0; q < fid_robot.cols(); ++q) {
-    Location loc;
-    loc.point = "F" + std::to_string(q);
-    loc.robot_m = fid_robot.col(q);
-    loc.sensor_m = fid_sensor.col(q);
-    loc.n_readings = 1;
-    model.fiducials.push_back(loc);
-  }
+  model.fiducials_robot_m = fid_robot;
   InterpolationSettings settings;
   settings.method = InterpolationMethod::kGrid;
   const Points3 targets_sensor = measure(targets_robot);

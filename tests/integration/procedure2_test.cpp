@@ -36,10 +36,10 @@ std::vector<Location> pick(const MeasurementSet& set, const std::vector<std::siz
 double per_label_cor_rms_t(const MeasurementSet& set, int config) {
   const std::vector<std::size_t> fid = set.select(Role::kFiducial, config);
   const std::vector<std::size_t> tgt = set.select(Role::kTarget, config);
-  RegistrationModel model;
+  CorrectionField model;
   model.T_robot_sensor =
       register_rigid(set.sensor_points(fid), set.robot_points(fid)).T_robot_sensor;
-  model.fiducials = pick(set, fid);
+  model.fiducials_robot_m = set.robot_points(fid);
   model.corrections_sensor_m =
       fiducial_corrections(model.T_robot_sensor, set.sensor_points(fid), set.robot_points(fid));
   InterpolationSettings settings;
@@ -56,15 +56,12 @@ double strategy3_cor_rms_t(const MeasurementSet& set, int config, std::uint64_t 
   const std::vector<std::size_t> tgt = set.select(Role::kTarget, config);
   planning::Strategy3Options options;
   options.seed = seed;
-  RegistrationModel model;
-  model.fiducials = pick(set, fid);
-  const planning::Strategy3Registration r =
-      planning::register_volume_corners(model.fiducials, options);
-  model.T_robot_sensor = r.registration.T_robot_sensor;
-  model.corrections_sensor_m = r.corrections_sensor_m;
+  const std::vector<Location> fiducials = pick(set, fid);
+  const planning::Strategy3Registration r = planning::register_volume_corners(fiducials, options);
   planning::Strategy3CorrectionOptions correction;
   correction.cube_edge_m = kCubeEdgeM;
-  const TargetCorrection c = planning::correct_targets_strategy3(model, pick(set, tgt), correction);
+  const TargetCorrection c = planning::correct_targets_strategy3(
+      r.registration.T_robot_sensor, fiducials, r.corrections_sensor_m, pick(set, tgt), correction);
   EXPECT_EQ(c.n_flagged, 0);
   return root_mean_square(point_errors(c.corrected_robot_m, set.robot_points(tgt)));
 }

@@ -29,13 +29,13 @@ RegistrationModel model_with_fiducials(int n) {
 
 TEST(ModelProcedure2, Strategy3RoundTrips) {
   RegistrationModel m = model_with_fiducials(10);
-  m.procedure2.strategy = 3;
-  m.procedure2.joint_norm = "linf";
+  m.procedure2.strategy = planning::Strategy::kVolumeCorners;
+  m.procedure2.joint_norm = kinematics::JointNorm::kLinf;
   m.procedure2.seed = 18446744073709551615ULL;
   m.procedure2.registration_fiducials = {0, 3, 2, 5, 4, 7, 6, 9};
   const RegistrationModel back = parse_model_json(format_model_json(m), "m.json");
-  EXPECT_EQ(back.procedure2.strategy, 3);
-  EXPECT_EQ(back.procedure2.joint_norm, "linf");
+  EXPECT_EQ(back.procedure2.strategy, planning::Strategy::kVolumeCorners);
+  EXPECT_EQ(back.procedure2.joint_norm, kinematics::JointNorm::kLinf);
   EXPECT_EQ(back.procedure2.seed, m.procedure2.seed);
   EXPECT_EQ(back.procedure2.registration_fiducials, m.procedure2.registration_fiducials);
   EXPECT_EQ(back.fiducials[3].config, 2);
@@ -44,18 +44,19 @@ TEST(ModelProcedure2, Strategy3RoundTrips) {
 TEST(ModelProcedure2, Strategy2RoundTripsAndPlainModelsHaveNoBlock) {
   RegistrationModel m = model_with_fiducials(3);
   EXPECT_EQ(format_model_json(m).find("procedure2"), std::string::npos);
-  EXPECT_EQ(parse_model_json(format_model_json(m), "m.json").procedure2.strategy, 0);
-  m.procedure2.strategy = 2;
+  EXPECT_EQ(parse_model_json(format_model_json(m), "m.json").procedure2.strategy,
+            planning::Strategy::kNone);
+  m.procedure2.strategy = planning::Strategy::kAlongPath;
   const RegistrationModel back = parse_model_json(format_model_json(m), "m.json");
-  EXPECT_EQ(back.procedure2.strategy, 2);
-  EXPECT_EQ(back.procedure2.joint_norm, "l2");
+  EXPECT_EQ(back.procedure2.strategy, planning::Strategy::kAlongPath);
+  EXPECT_EQ(back.procedure2.joint_norm, kinematics::JointNorm::kL2);
   EXPECT_FALSE(back.procedure2.seed);
   EXPECT_TRUE(back.procedure2.registration_fiducials.empty());
 }
 
 TEST(ModelProcedure2, BrokenBlockNamesTheKey) {
   RegistrationModel m = model_with_fiducials(3);
-  m.procedure2.strategy = 3;
+  m.procedure2.strategy = planning::Strategy::kVolumeCorners;
   m.procedure2.seed = 1;
   m.procedure2.registration_fiducials = {0, 1, 2};
   const nlohmann::json good = nlohmann::json::parse(format_model_json(m));

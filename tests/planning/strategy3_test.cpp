@@ -171,13 +171,10 @@ TEST(Strategy3Registration, RigidDataRegistersExactly) {
 TEST(Strategy3Correction, ExactWhenEveryCornerIsInTheTargetsArm) {
   const TwoArmGrid g = two_arm_grid();
   const Strategy3Registration r = register_volume_corners(g.fiducials, {});
-  RegistrationModel model;
-  model.T_robot_sensor = r.registration.T_robot_sensor;
-  model.fiducials = g.fiducials;
-  model.corrections_sensor_m = r.corrections_sensor_m;
   Strategy3CorrectionOptions options;
   options.cube_edge_m = 0.04;
-  const TargetCorrection c = correct_targets_strategy3(model, g.targets, options);
+  const TargetCorrection c = correct_targets_strategy3(r.registration.T_robot_sensor, g.fiducials,
+                                                         r.corrections_sensor_m, g.targets, options);
   ASSERT_EQ(c.n_flagged, 0);
   Points3 targets_robot(3, 2);
   for (std::size_t t = 0; t < 2; ++t)

@@ -24,6 +24,7 @@ struct Location {
   int n_readings = 0;             ///< number of repeat readings averaged into sensor_m
   Eigen::Vector3d sensor_sq_dev_m2 = Eigen::Vector3d::Zero();  ///< per-axis sum of squared deviations
   std::vector<double> q_rad;      ///< joint angles, empty when absent
+  double weight = 1.0;            ///< registration weight (Eq. 2); files give every location 1
   std::size_t source_line = 0;    ///< first line of the file this location came from (1-based)
 };
 

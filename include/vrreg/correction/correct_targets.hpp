@@ -4,11 +4,21 @@
 #include <string>
 #include <vector>
 
-#include "vrreg/core/model.hpp"
 #include "vrreg/core/types.hpp"
+#include "vrreg/correction/interpolation.hpp"
 #include "vrreg/correction/rrbc.hpp"
 
 namespace vrreg {
+
+/// What RRBC interpolates (Eq. 6-8): the registration and, per fiducial, its nominal robot
+/// position, its correction and where it was read.
+struct CorrectionField {
+  RigidTransform T_robot_sensor;  ///< Y ~ R X + tau (Eq. 2)
+  Points3 fiducials_robot_m;      ///< nominal robot positions of the fiducials [m]
+  Points3 corrections_sensor_m;   ///< epsilon_j (Eq. 6) per fiducial, sensor frame [m]
+  /// Where each fiducial was read (its file line: the visiting order), or empty when unknown.
+  std::vector<std::size_t> fiducials_sequence;
+};
 
 /// Result of correct_targets; every per-target vector has one entry per target.
 struct TargetCorrection {
@@ -22,14 +32,14 @@ struct TargetCorrection {
   int n_flagged = 0;             ///< targets with status != kOk
 };
 
-/// Corrects targets measured in the sensor frame with the model's fiducial corrections.
+/// Corrects targets measured in the sensor frame with the fiducial corrections of `field`.
 /// targets_sensor_m: measured targets [m]; targets_robot_nominal_m: their nominal robot positions
 /// [m] (needed by octuplet only; may have 0 columns otherwise). Throws InputError when the method
 /// cannot be used at all (e.g. grid on fiducials that hold no complete grid, octuplet without a
 /// cube edge, scattered on coplanar fiducials). targets_sequence: where each target was read (its
 /// file line), or empty; with it and the fiducials' source lines, octuplet accepts corners
 /// measured more than once and takes the reading nearest the target's.
-TargetCorrection correct_targets(const RegistrationModel& model,
+TargetCorrection correct_targets(const CorrectionField& field,
                                  const ConstPoints3Ref& targets_sensor_m,
                                  const ConstPoints3Ref& targets_robot_nominal_m,
                                  const InterpolationSettings& settings,

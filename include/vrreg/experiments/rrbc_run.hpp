@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "vrreg/core/measurement.hpp"
-#include "vrreg/core/model.hpp"
+#include "vrreg/correction/interpolation.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
 
 namespace vrreg::experiments {

@@ -1,22 +1,7 @@
 #pragma once
-// Errors in input files: the message names the file and, where there is one, the line.
-#include <cstddef>
-#include <string>
-
-#include "vrreg/core/check.hpp"
+// io's name for vrreg::FileError (core/file_error.hpp), which every reader throws.
+#include "vrreg/core/file_error.hpp"
 
 namespace vrreg::io {
-
-/// Bad content in a file: what() reads "path:line: message" (or "path: message" when line is 0).
-class FileError : public InputError {
- public:
-  FileError(const std::string& path, std::size_t line, const std::string& message);
-  [[nodiscard]] const std::string& path() const { return path_; }
-  [[nodiscard]] std::size_t line() const { return line_; }
-
- private:
-  std::string path_;
-  std::size_t line_;
-};
-
+using vrreg::FileError;
 }  // namespace vrreg::io

@@ -1,7 +1,7 @@
 #pragma once
 // The registration model file (`register -o model.json`): JSON with "format": "vrreg-model",
 // "version": 1, "units": {"length": "mm", "angle": "rad"}, rotation (3x3 rows), translation_mm,
-// scale, fre_mm, sigma_l_mm, config (or null), source, interpolation {method, cube_mm,
+// scale, fre_mm, sigma_l_mm, sigma_rep_mm (when given to register), config (or null), source, interpolation {method, cube_mm,
 // match_tolerance_mm} and fiducials [{point, config, robot_mm, sensor_mm, n_readings,
 // sensor_sq_dev_mm2, q_rad (omitted when empty), correction_mm}], and for models built with a
 // Procedure 2 strategy (section 4.4) procedure2 {strategy, joint_norm, seed (Strategy 3),
@@ -9,7 +9,7 @@
 // shortest form that reads back exactly; unknown keys are ignored when reading.
 #include <string>
 
-#include "vrreg/core/model.hpp"
+#include "vrreg/pipeline/model.hpp"
 
 namespace vrreg::io {
 

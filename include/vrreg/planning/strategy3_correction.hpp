@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "vrreg/core/measurement.hpp"
-#include "vrreg/core/model.hpp"
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/correction/rrbc.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
@@ -30,10 +29,12 @@ std::vector<Stencil> nearest_configuration_stencils(const std::vector<Location>&
                                                     const std::vector<Location>& targets,
                                                     const Strategy3CorrectionOptions& options);
 
-/// Corrects `targets` (their sensor_m, robot_m nominal and q_rad) with a model whose fiducials
-/// hold all arm configurations and whose corrections are against its single registration (Eq. 6,
-/// 7, 8). Flagged targets (missing corner) keep the uncorrected mapping.
-TargetCorrection correct_targets_strategy3(const RegistrationModel& model,
+/// Corrects `targets` (their sensor_m, robot_m nominal and q_rad) with `fiducials` that hold all
+/// arm configurations and whose corrections [m, sensor] are against the single registration
+/// T_robot_sensor (Eq. 6, 7, 8). Flagged targets (missing corner) keep the uncorrected mapping.
+TargetCorrection correct_targets_strategy3(const RigidTransform& T_robot_sensor,
+                                           const std::vector<Location>& fiducials,
+                                           const ConstPoints3Ref& corrections_sensor_m,
                                            const std::vector<Location>& targets,
                                            const Strategy3CorrectionOptions& options);
 

@@ -1,0 +1,40 @@
+#pragma once
+// The front door, step 3: RRBC-corrected robot-frame positions for points measured by the sensor
+// (Eq. 7, 8, then mapped with {R, tau}): what the robot should be commanded to.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vrreg/core/measurement.hpp"
+#include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/pipeline/interpolation_choice.hpp"
+#include "vrreg/pipeline/model.hpp"
+#include "vrreg/pipeline/points.hpp"
+
+namespace vrreg {
+
+/// Options of correct; unset members take the model's value.
+struct CorrectOptions {
+  std::optional<int> config;          ///< correct points with this label only (default: the model's)
+  InterpolationChoice interpolation;  ///< over the model's stored interpolation
+};
+
+/// The corrected points, in the order given.
+struct CorrectResult {
+  InterpolationSettings interpolation;  ///< as used
+  TargetCorrection correction;  ///< corrected_robot_m is what to command (uncorrected if flagged)
+  std::vector<std::string> names;
+  std::vector<std::optional<int>> configs;
+};
+
+/// Corrects the target rows of a measurement set (robot columns needed by octuplet and Strategy 3
+/// only; errors name `points.source`), following the model's Procedure 2 strategy.
+CorrectResult correct(const RegistrationModel& model, const MeasurementSet& points,
+                      const CorrectOptions& options = {});
+
+/// Corrects points given as arrays [m]: sensor_m always; robot_m (nominal) for octuplet; configs
+/// and joints_rad for models built with Strategy 2 or 3.
+CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& points,
+                      const CorrectOptions& options = {});
+
+}  // namespace vrreg

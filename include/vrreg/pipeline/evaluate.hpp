@@ -1,0 +1,56 @@
+#pragma once
+// The front door, step 2: the true accuracy of a model on independent targets — TRE and RMS_T
+// uncorrected and RRBC-corrected (Eq. 3, 4, 7, 8), gamma, N_bad, Delta TRE (section 5.1) —
+// following the model's Procedure 2 strategy (section 4.4).
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vrreg/core/measurement.hpp"
+#include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/kinematics/joint_distance.hpp"
+#include "vrreg/metrics/improvement.hpp"
+#include "vrreg/pipeline/interpolation_choice.hpp"
+#include "vrreg/pipeline/model.hpp"
+#include "vrreg/pipeline/points.hpp"
+#include "vrreg/planning/procedure2.hpp"
+#include "vrreg/planning/strategy2_labels.hpp"
+
+namespace vrreg {
+
+/// Options of evaluate; unset members take the model's value.
+struct EvaluateOptions {
+  std::optional<int> config;  ///< evaluate targets with this label only (default: the model's)
+  InterpolationChoice interpolation;  ///< over the model's stored interpolation
+  /// The model's strategy (the default), or 1 on a model built without one (per configuration).
+  std::optional<planning::Strategy> strategy;
+  /// Strategy 3: the joint distance for nearest configurations; Strategy 2: must be the model's.
+  std::optional<kinematics::JointNorm> joint_norm;
+};
+
+/// The evaluated targets, in the order given.
+struct EvaluateResult {
+  planning::Strategy strategy = planning::Strategy::kNone;  ///< as used
+  std::optional<int> config;            ///< the configuration evaluated, if one
+  InterpolationSettings interpolation;  ///< as used (the model's with the options applied)
+  TargetCorrection correction;          ///< stencils, corrected and uncorrected robot positions
+  std::vector<std::string> names;       ///< target labels
+  std::vector<std::optional<int>> configs;  ///< their configuration labels (Strategy 2: new ones)
+  Points3 targets_robot_m;              ///< nominal robot positions [m]
+  Eigen::VectorXd unc_tre_m;  ///< TRE(T_X) per target (Eq. 3) [m]
+  Eigen::VectorXd cor_tre_m;  ///< TRE(T^_X) per target; flagged targets keep the uncorrected one
+  ImprovementSummary summary;  ///< RMS_T (Eq. 4) both ways, gamma, N_bad, Delta TRE
+  std::vector<std::string> bad_targets;  ///< names of the targets RRBC made worse
+  std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2: the targets' relabelling
+};
+
+/// Evaluates `model` on the target rows of a measurement set (errors name `targets.source`).
+EvaluateResult evaluate(const RegistrationModel& model, const MeasurementSet& targets,
+                        const EvaluateOptions& options = {});
+
+/// Evaluates `model` on targets given as arrays [m] (robot_m required).
+EvaluateResult evaluate(const RegistrationModel& model, const MeasuredPoints& targets,
+                        const EvaluateOptions& options = {});
+
+}  // namespace vrreg

@@ -1,0 +1,39 @@
+#pragma once
+// The registration model: what `register_fiducials` builds, the model file holds, and `evaluate`
+// and `correct` use: the transform, the fiducials it came from, their RRBC corrections (Eq. 6),
+// how to interpolate them (Eq. 7) and how arm configurations are treated (Procedure 2).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vrreg/core/measurement.hpp"
+#include "vrreg/core/types.hpp"
+#include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/correction/interpolation.hpp"
+#include "vrreg/planning/procedure2.hpp"
+
+namespace vrreg {
+
+/// Everything needed to correct new targets: the registration and the fiducial corrections.
+struct RegistrationModel {
+  static constexpr int kFormatVersion = 1;
+  RigidTransform T_robot_sensor;     ///< Y ~ R X + tau (Eq. 2); scale 1 unless estimated
+  std::vector<Location> fiducials;   ///< nominal robot and averaged sensor positions, labels, joints
+  Points3 corrections_sensor_m;      ///< epsilon_j (Eq. 6), one column per fiducial, sensor frame
+  InterpolationSettings interpolation;  ///< the default of evaluate and correct
+  std::optional<int> config;         ///< configuration label the model was built for, if any
+  /// Strategy 2: `fiducials` carry Strategy 2 labels. Strategy 3: `fiducials` hold every arm
+  /// configuration, corrected against the one registration from `registration_fiducials`.
+  planning::Procedure2 procedure2;
+  double fre_m = 0.0;                ///< FRE of the registration (Eq. 2)
+  double sigma_l_m = 0.0;            ///< sigma_L over the registered fiducial pairs (Eq. 1)
+  std::optional<double> sigma_rep_m;  ///< robot repeatability given when building (Eq. 9) [m]
+  std::string source;                ///< the fiducial file (or "arrays") it came from
+
+  /// What RRBC interpolates (Eq. 6-8): the transform, fiducial positions, corrections, order.
+  [[nodiscard]] CorrectionField correction_field() const;
+  /// Throws InputError when the parts disagree (counts, non-finite values, no fiducials).
+  void validate() const;
+};
+
+}  // namespace vrreg

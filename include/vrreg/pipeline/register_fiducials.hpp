@@ -1,0 +1,61 @@
+#pragma once
+// The front door, step 1: register fiducials (Eq. 2), check the rigid-body condition (Eq. 1) and
+// the noise (Eq. 9), and compute the RRBC corrections (Eq. 6) into a model — in one call, with
+// Procedure 2's strategies (section 4.4) and the robust variant as options.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vrreg/core/measurement.hpp"
+#include "vrreg/correction/interpolation.hpp"
+#include "vrreg/metrics/noise.hpp"
+#include "vrreg/metrics/rigid_body.hpp"
+#include "vrreg/pipeline/model.hpp"
+#include "vrreg/pipeline/points.hpp"
+#include "vrreg/planning/procedure2.hpp"
+#include "vrreg/planning/strategy2_labels.hpp"
+#include "vrreg/registration/rigid.hpp"
+#include "vrreg/registration/robust.hpp"
+
+namespace vrreg {
+
+/// Options of register_fiducials; the defaults are the paper's (no scale, no strategy).
+struct RegisterOptions {
+  std::optional<int> config;  ///< register only the fiducials with this configuration label
+  RegistrationOptions registration;  ///< e.g. estimate_scale: a similarity instead (not the paper)
+  /// Reject gross outliers (a swapped marker) before registering: register_rigid_robust.
+  std::optional<RobustRegistrationOptions> robust;
+  std::optional<double> sigma_rep_m;  ///< robot repeatability for sigma_noise and rho (Eq. 9) [m]
+  bool rigid_body_statistics = true;  ///< sigma_L over all pairs (Eq. 1); off: sigma_L = 0
+  InterpolationSettings interpolation;  ///< stored in the model: evaluate's and correct's default
+  /// Procedure 2: strategy 1 and 2 need `config`; 3 registers the volume corners (needs joints and
+  /// configuration labels; octuplet interpolation with a cube edge) with procedure2.seed (1).
+  planning::Procedure2 procedure2;
+  /// Throws InputError on combinations that cannot work (see the members).
+  void validate() const;
+};
+
+/// What register_fiducials found, besides the model.
+struct RegisterResult {
+  RegistrationModel model;
+  RegistrationResult registration;  ///< the fit (Eq. 2): FRE, residuals, spread, of `registered`
+  std::size_t n_registered = 0;     ///< fiducials in the fit (8 for Strategy 3)
+  RigidBodyStatistics rigid_body;   ///< L_ij over the registered fiducials (Eq. 1)
+  NoiseFigures noise;               ///< sigma_opt, sigma_noise, rho (Eq. 9)
+  std::vector<std::string> rejected;  ///< robust: names of the rejected fiducials
+  std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2: what was relabelled
+};
+
+/// Builds a model from the fiducial rows of a measurement set (Role::kFiducial; errors name
+/// `fiducials.source`). Strategy 2 relabels along the set's visiting path (fiducials and targets).
+RegisterResult register_fiducials(const MeasurementSet& fiducials,
+                                  const RegisterOptions& options = {});
+
+/// Builds a model from fiducials given as arrays [m] (every location is a fiducial; the visiting
+/// path is their order). Throws InputError on mismatched sizes, non-finite values, fewer than 3
+/// fiducials, collinear or coincident ones.
+RegisterResult register_fiducials(const MeasuredPoints& fiducials,
+                                  const RegisterOptions& options = {});
+
+}  // namespace vrreg

@@ -1,0 +1,64 @@
+#include "vrreg/pipeline/correct.hpp"
+
+#include "procedure2_steps.hpp"
+#include "set_rows.hpp"
+#include "vrreg/core/check.hpp"
+
+namespace vrreg {
+namespace {
+
+using planning::Strategy;
+
+CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& input,
+                          const CorrectOptions& options) {
+  model.validate();
+  const Strategy strategy = model.procedure2.strategy;  // Procedure 2 (section 4.4): as registered
+  const kinematics::JointNorm norm = model.procedure2.joint_norm;
+  const MeasurementSet* set = &input;
+  MeasurementSet relabelled;
+  if (strategy == Strategy::kAlongPath) {
+    relabelled = pipeline_detail::relabel(input, norm).set;
+    set = &relabelled;
+  }
+  const std::optional<int> config = options.config ? options.config : model.config;
+  const std::vector<std::size_t> rows = pipeline_detail::select_rows(*set, Role::kTarget, config);
+  CorrectResult out;
+  out.interpolation = options.interpolation.apply(model.interpolation);
+  Points3 nominal(3, 0);
+  if (out.interpolation.method == InterpolationMethod::kOctuplet ||
+      strategy == Strategy::kVolumeCorners) {
+    for (const std::size_t i : rows) {
+      if (!set->locations[i].has_robot) {
+        pipeline_detail::fail(*set,
+                              "octuplet interpolation needs the nominal robot position of every "
+                              "point (robot_x_mm, ...)",
+                              set->locations[i].source_line);
+      }
+    }
+    nominal = set->robot_points(rows);
+  }
+  out.correction =
+      strategy == Strategy::kVolumeCorners
+          ? pipeline_detail::correct_volume_corners(model, *set, rows, out.interpolation, norm)
+          : correct_targets(model.correction_field(), set->sensor_points(rows), nominal,
+                            out.interpolation, pipeline_detail::source_lines(*set, rows));
+  for (const std::size_t i : rows) {
+    out.names.push_back(set->locations[i].point);
+    out.configs.push_back(set->locations[i].config);
+  }
+  return out;
+}
+
+}  // namespace
+
+CorrectResult correct(const RegistrationModel& model, const MeasurementSet& points,
+                      const CorrectOptions& options) {
+  return correct_set(model, points, options);
+}
+
+CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& points,
+                      const CorrectOptions& options) {
+  return correct_set(model, points.to_measurement_set(Role::kTarget, false), options);
+}
+
+}  // namespace vrreg

@@ -1,0 +1,87 @@
+#include "vrreg/pipeline/evaluate.hpp"
+
+#include "procedure2_steps.hpp"
+#include "set_rows.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/metrics/errors.hpp"
+
+namespace vrreg {
+namespace {
+
+using planning::Strategy;
+
+// The strategy evaluate follows: the model's, or 1 on a model built without one.
+Strategy strategy_to_use(const RegistrationModel& model, const EvaluateOptions& options) {
+  const Strategy built = model.procedure2.strategy;
+  const Strategy s = options.strategy.value_or(built);
+  VRREG_THROW_UNLESS(s == built || (s == Strategy::kAsListed && built == Strategy::kNone),
+                     "the model was built with "
+                         << (built == Strategy::kNone
+                                 ? std::string("no strategy")
+                                 : "--strategy " + std::to_string(planning::strategy_number(built)))
+                         << ", not --strategy " << planning::strategy_number(s)
+                         << ": register again with it");
+  VRREG_THROW_UNLESS(
+      !options.joint_norm || s == Strategy::kAlongPath || s == Strategy::kVolumeCorners,
+      "--joint-norm is for strategies 2 and 3");
+  VRREG_THROW_UNLESS(s != Strategy::kAlongPath || !options.joint_norm ||
+                         *options.joint_norm == model.procedure2.joint_norm,
+                     "the model's Strategy 2 labels use --joint-norm "
+                         << kinematics::to_string(model.procedure2.joint_norm)
+                         << "; the targets must use the same");
+  return s;
+}
+
+EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet& input,
+                            const EvaluateOptions& options) {
+  model.validate();
+  EvaluateResult out;
+  out.strategy = strategy_to_use(model, options);
+  const kinematics::JointNorm norm = options.joint_norm.value_or(model.procedure2.joint_norm);
+  const MeasurementSet* set = &input;
+  MeasurementSet relabelled;
+  if (out.strategy == Strategy::kAlongPath) {  // the targets take the labels of their own path
+    planning::Strategy2Result r = pipeline_detail::relabel(input, norm);
+    relabelled = std::move(r.set);
+    out.relabelled = r.summary;
+    set = &relabelled;
+  }
+  // A model built for one configuration is evaluated on that configuration unless told otherwise.
+  out.config = options.config ? options.config : model.config;
+  VRREG_THROW_UNLESS(out.strategy != Strategy::kAsListed || out.config,
+                     "--strategy 1 evaluates one configuration: give --config N");
+  const std::vector<std::size_t> rows =
+      pipeline_detail::select_rows(*set, Role::kTarget, out.config);
+  const Points3 targets_sensor = set->sensor_points(rows);
+  out.targets_robot_m = set->robot_points(rows);
+  out.interpolation = options.interpolation.apply(model.interpolation);
+  out.correction =
+      out.strategy == Strategy::kVolumeCorners
+          ? pipeline_detail::correct_volume_corners(model, *set, rows, out.interpolation, norm)
+          : correct_targets(model.correction_field(), targets_sensor, out.targets_robot_m,
+                            out.interpolation, pipeline_detail::source_lines(*set, rows));
+  // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.
+  out.unc_tre_m = point_errors(out.correction.uncorrected_robot_m, out.targets_robot_m);  // Eq. 3
+  out.cor_tre_m = point_errors(out.correction.corrected_robot_m, out.targets_robot_m);
+  out.summary = summarize_improvement(out.unc_tre_m, out.cor_tre_m);
+  for (const std::size_t i : rows) {
+    out.names.push_back(set->locations[i].point);
+    out.configs.push_back(set->locations[i].config);
+  }
+  for (const int n : out.summary.bad_targets) out.bad_targets.push_back(out.names[static_cast<std::size_t>(n)]);
+  return out;
+}
+
+}  // namespace
+
+EvaluateResult evaluate(const RegistrationModel& model, const MeasurementSet& targets,
+                        const EvaluateOptions& options) {
+  return evaluate_set(model, targets, options);
+}
+
+EvaluateResult evaluate(const RegistrationModel& model, const MeasuredPoints& targets,
+                        const EvaluateOptions& options) {
+  return evaluate_set(model, targets.to_measurement_set(Role::kTarget, true), options);
+}
+
+}  // namespace vrreg

@@ -1,0 +1,48 @@
+#include "vrreg/pipeline/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "vrreg/core/check.hpp"
+
+namespace vrreg {
+
+CorrectionField RegistrationModel::correction_field() const {
+  CorrectionField field;
+  field.T_robot_sensor = T_robot_sensor;
+  field.fiducials_robot_m.resize(3, static_cast<Eigen::Index>(fiducials.size()));
+  for (std::size_t j = 0; j < fiducials.size(); ++j) {
+    field.fiducials_robot_m.col(static_cast<Eigen::Index>(j)) = fiducials[j].robot_m;
+  }
+  field.corrections_sensor_m = corrections_sensor_m;
+  // The visiting order is known only when every fiducial came from a file line.
+  if (std::all_of(fiducials.begin(), fiducials.end(),
+                  [](const Location& f) { return f.source_line > 0; })) {
+    for (const Location& f : fiducials) field.fiducials_sequence.push_back(f.source_line);
+  }
+  return field;
+}
+
+void RegistrationModel::validate() const {
+  VRREG_THROW_UNLESS(!fiducials.empty(), "the model has no fiducials");
+  VRREG_THROW_UNLESS(corrections_sensor_m.cols() == static_cast<Eigen::Index>(fiducials.size()),
+                     "the model has " << corrections_sensor_m.cols()
+                                      << " fiducial corrections for " << fiducials.size()
+                                      << " fiducials");
+  VRREG_THROW_UNLESS(corrections_sensor_m.allFinite(),
+                     "the model's fiducial corrections are not all finite");
+  const RigidTransform& T = T_robot_sensor;
+  VRREG_THROW_UNLESS(T.rotation.allFinite() && T.translation_m.allFinite() &&
+                         std::isfinite(T.scale) && T.scale > 0.0,
+                     "the model's transform is not finite (scale " << T.scale << ")");
+  for (const Location& f : fiducials) {
+    VRREG_THROW_UNLESS(f.has_robot && f.robot_m.allFinite() && f.sensor_m.allFinite(),
+                       "fiducial '" << f.point << "' has no finite position");
+  }
+  for (const std::size_t j : procedure2.registration_fiducials) {
+    VRREG_THROW_UNLESS(j < fiducials.size(),
+                       "registration fiducial " << j << " of " << fiducials.size());
+  }
+}
+
+}  // namespace vrreg

@@ -1,0 +1,95 @@
+#include "procedure2_steps.hpp"
+
+#include <string>
+
+#include "set_rows.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/file_error.hpp"
+#include "vrreg/planning/strategy3_correction.hpp"
+#include "vrreg/planning/strategy3_registration.hpp"
+
+namespace vrreg::pipeline_detail {
+
+void require_configurations(const MeasurementSet& set, planning::Strategy strategy) {
+  const std::string s = std::to_string(planning::strategy_number(strategy));
+  if (!set.has_config) {
+    fail(set, "--strategy " + s + " needs a config column (the arm configuration of each row)");
+  }
+  if (set.n_joints == 0) {
+    fail(set, "--strategy " + s + " needs joint columns (q1_rad..qN_rad or q1_deg..qN_deg)");
+  }
+}
+
+planning::Strategy2Result relabel(const MeasurementSet& set, kinematics::JointNorm norm) {
+  require_configurations(set, planning::Strategy::kAlongPath);
+  try {
+    return planning::relabel_strategy2(set, norm);
+  } catch (const FileError&) {
+    throw;
+  } catch (const InputError& e) {
+    fail(set, e.what());
+  }
+}
+
+RegistrationModel volume_corner_model(const MeasurementSet& set, const planning::Procedure2& p2,
+                                      const RegistrationOptions& registration,
+                                      const InterpolationSettings& interpolation,
+                                      RegistrationResult& registration_result,
+                                      Points3& registered_sensor_m, Points3& registered_robot_m) {
+  require_configurations(set, planning::Strategy::kVolumeCorners);
+  RegistrationModel model;
+  for (const std::size_t i : set.select(Role::kFiducial)) model.fiducials.push_back(set.locations[i]);
+  planning::Strategy3Options options;
+  options.seed = p2.seed.value_or(1);
+  options.match_tolerance_m = interpolation.match_tolerance_m;
+  options.registration = registration;
+  planning::Strategy3Registration r;
+  try {
+    r = planning::register_volume_corners(model.fiducials, options);
+  } catch (const InputError& e) {
+    fail(set, e.what());
+  }
+  registration_result = r.registration;
+  registered_sensor_m.resize(3, 8);
+  registered_robot_m.resize(3, 8);
+  for (std::size_t c = 0; c < 8; ++c) {
+    const Location& f = model.fiducials[r.corner_fiducials[c]];
+    registered_sensor_m.col(static_cast<Eigen::Index>(c)) = f.sensor_m;
+    registered_robot_m.col(static_cast<Eigen::Index>(c)) = f.robot_m;
+    model.procedure2.registration_fiducials.push_back(r.corner_fiducials[c]);
+  }
+  model.T_robot_sensor = r.registration.T_robot_sensor;
+  model.fre_m = r.registration.fre_m;
+  model.corrections_sensor_m = r.corrections_sensor_m;
+  model.interpolation = interpolation;
+  model.source = set.source;
+  model.procedure2.strategy = planning::Strategy::kVolumeCorners;
+  model.procedure2.joint_norm = p2.joint_norm;
+  model.procedure2.seed = options.seed;
+  return model;
+}
+
+TargetCorrection correct_volume_corners(const RegistrationModel& model, const MeasurementSet& set,
+                                        const std::vector<std::size_t>& rows,
+                                        const InterpolationSettings& settings,
+                                        kinematics::JointNorm norm) {
+  require_configurations(set, planning::Strategy::kVolumeCorners);
+  if (settings.method != InterpolationMethod::kOctuplet &&
+      settings.method != InterpolationMethod::kAuto) {
+    fail(set, std::string("--strategy 3 corrects with octuplets, not --interpolation ") +
+                  to_string(settings.method));
+  }
+  planning::Strategy3CorrectionOptions options;
+  options.cube_edge_m = settings.cube_edge_m;
+  options.match_tolerance_m = settings.match_tolerance_m;
+  options.norm = norm;
+  try {
+    return planning::correct_targets_strategy3(model.T_robot_sensor, model.fiducials,
+                                               model.corrections_sensor_m, locations_of(set, rows),
+                                               options);
+  } catch (const InputError& e) {
+    fail(set, e.what());
+  }
+}
+
+}  // namespace vrreg::pipeline_detail

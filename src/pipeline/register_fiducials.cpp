@@ -1,0 +1,136 @@
+#include "vrreg/pipeline/register_fiducials.hpp"
+
+#include <algorithm>
+
+#include "procedure2_steps.hpp"
+#include "set_rows.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/file_error.hpp"
+#include "vrreg/correction/rrbc.hpp"
+
+namespace vrreg {
+namespace {
+
+using planning::Strategy;
+using pipeline_detail::fail;
+
+// The registration weights of `rows`, or none when all are 1 (the paper's equal weights).
+Eigen::VectorXd weights_of(const MeasurementSet& set, const std::vector<std::size_t>& rows) {
+  const bool equal = std::all_of(rows.begin(), rows.end(),
+                                 [&](std::size_t i) { return set.locations[i].weight == 1.0; });
+  if (equal) return {};
+  Eigen::VectorXd w(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t k = 0; k < rows.size(); ++k) w(static_cast<Eigen::Index>(k)) = set.locations[rows[k]].weight;
+  return w;
+}
+
+// Registers the fiducial rows (of one configuration with options.config): no strategy, 1 or 2.
+// Fills the model, the fit, the registered points and the rejected names.
+void register_rows(const MeasurementSet& set, const RegisterOptions& options, RegisterResult& out,
+                   Points3& sensor, Points3& robot) {
+  const std::vector<std::size_t> rows =
+      pipeline_detail::select_rows(set, Role::kFiducial, options.config);
+  RegistrationModel& model = out.model;
+  model.source = set.source;
+  model.config = options.config;
+  model.interpolation = options.interpolation;
+
+  std::vector<std::size_t> kept = rows;
+  if (options.robust) {
+    sensor = set.sensor_points(rows);
+    robot = set.robot_points(rows);
+    RobustRegistrationOptions robust = *options.robust;
+    robust.registration = options.registration;
+    const RobustRegistrationResult r = register_rigid_robust(sensor, robot, robust);
+    if (!r.converged) fail(set, "robust registration failed: " + r.message);
+    kept.clear();
+    std::size_t next_rejected = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      if (next_rejected < r.rejected.size() &&
+          r.rejected[next_rejected] == static_cast<Eigen::Index>(k)) {
+        out.rejected.push_back(set.locations[rows[k]].point);
+        ++next_rejected;
+      } else {
+        kept.push_back(rows[k]);
+      }
+    }
+  }
+  sensor = set.sensor_points(kept);
+  robot = set.robot_points(kept);
+  out.registration = register_rigid(sensor, robot, options.registration, weights_of(set, kept));
+  model.T_robot_sensor = out.registration.T_robot_sensor;
+  model.fre_m = out.registration.fre_m;
+  model.fiducials = pipeline_detail::locations_of(set, kept);
+  model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, sensor, robot);  // Eq. 6
+}
+
+RegisterResult register_unchecked(const MeasurementSet& input, const RegisterOptions& options) {
+  options.validate();
+  const Strategy strategy = options.procedure2.strategy;
+  RegisterResult out;
+  const MeasurementSet* set = &input;
+  MeasurementSet relabelled;
+  if (strategy == Strategy::kAlongPath) {
+    planning::Strategy2Result r = pipeline_detail::relabel(input, options.procedure2.joint_norm);
+    relabelled = std::move(r.set);
+    out.relabelled = r.summary;
+    set = &relabelled;
+  }
+  Points3 sensor, robot;
+  if (strategy == Strategy::kVolumeCorners) {
+    out.model = pipeline_detail::volume_corner_model(*set, options.procedure2, options.registration,
+                                                     options.interpolation, out.registration,
+                                                     sensor, robot);
+  } else {
+    register_rows(*set, options, out, sensor, robot);
+    out.model.procedure2.strategy = strategy;
+    out.model.procedure2.joint_norm = options.procedure2.joint_norm;
+  }
+  out.n_registered = static_cast<std::size_t>(sensor.cols());
+  if (options.rigid_body_statistics) {
+    out.rigid_body = rigid_body_statistics(sensor, robot);  // Eq. 1
+  }
+  out.model.sigma_l_m = out.rigid_body.sigma_l_m;
+  out.model.sigma_rep_m = options.sigma_rep_m;
+  out.noise = noise_figures(sigma_opt_m(out.model.fiducials), options.sigma_rep_m,
+                            out.rigid_body.sigma_l_m);  // Eq. 9
+  return out;
+}
+
+}  // namespace
+
+void RegisterOptions::validate() const {
+  registration.validate();
+  interpolation.validate();
+  if (robust) robust->validate();
+  VRREG_THROW_UNLESS(!sigma_rep_m || (std::isfinite(*sigma_rep_m) && *sigma_rep_m >= 0.0),
+                     "the robot repeatability must be finite and >= 0, got " << *sigma_rep_m
+                                                                              << " m");
+  const Strategy s = procedure2.strategy;
+  const int n = planning::strategy_number(s);
+  VRREG_THROW_UNLESS((s != Strategy::kAsListed && s != Strategy::kAlongPath) || config,
+                     "--strategy " << n << " registers one configuration: give --config N");
+  VRREG_THROW_UNLESS(s != Strategy::kVolumeCorners || !config,
+                     "--strategy 3 registers every configuration at once; "
+                     "--config N selects targets in evaluate");
+  VRREG_THROW_UNLESS(s != Strategy::kVolumeCorners || !robust,
+                     "--robust is not available with --strategy 3");
+  VRREG_THROW_UNLESS(s != Strategy::kVolumeCorners ||
+                         interpolation.method == InterpolationMethod::kAuto ||
+                         interpolation.method == InterpolationMethod::kOctuplet,
+                     "--strategy 3 corrects with octuplets (--cube-mm), not --interpolation "
+                         << to_string(interpolation.method));
+  VRREG_THROW_UNLESS(s == Strategy::kVolumeCorners || !procedure2.seed, "--seed is for --strategy 3");
+  VRREG_THROW_UNLESS(procedure2.registration_fiducials.empty(),
+                     "registration_fiducials are chosen by Strategy 3, not given");
+}
+
+RegisterResult register_fiducials(const MeasurementSet& fiducials, const RegisterOptions& options) {
+  return register_unchecked(fiducials, options);
+}
+
+RegisterResult register_fiducials(const MeasuredPoints& fiducials, const RegisterOptions& options) {
+  return register_unchecked(fiducials.to_measurement_set(Role::kFiducial, true), options);
+}
+
+}  // namespace vrreg

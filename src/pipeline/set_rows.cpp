@@ -1,0 +1,42 @@
+#include "set_rows.hpp"
+
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/file_error.hpp"
+
+namespace vrreg::pipeline_detail {
+
+void fail(const MeasurementSet& set, const std::string& message, std::size_t line) {
+  if (set.source.empty()) throw InputError(message);
+  throw FileError(set.source, line, message);
+}
+
+std::vector<std::size_t> select_rows(const MeasurementSet& set, Role role,
+                                     std::optional<int> config) {
+  std::vector<std::size_t> rows = set.select(role, config);
+  const std::string what = role == Role::kFiducial ? "fiducial" : "target";
+  if (config && !set.has_config) {
+    fail(set, "--config " + std::to_string(*config) + " given but the file has no config column");
+  }
+  if (rows.empty()) {
+    fail(set, "no " + what + " rows" +
+                  (config ? " with config " + std::to_string(*config) : std::string()));
+  }
+  return rows;
+}
+
+std::vector<std::size_t> source_lines(const MeasurementSet& set,
+                                      const std::vector<std::size_t>& rows) {
+  std::vector<std::size_t> lines;
+  lines.reserve(rows.size());
+  for (std::size_t i : rows) lines.push_back(set.locations[i].source_line);
+  return lines;
+}
+
+std::vector<Location> locations_of(const MeasurementSet& set, const std::vector<std::size_t>& rows) {
+  std::vector<Location> out;
+  out.reserve(rows.size());
+  for (std::size_t i : rows) out.push_back(set.locations[i]);
+  return out;
+}
+
+}  // namespace vrreg::pipeline_detail
