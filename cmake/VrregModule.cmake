@@ -1,17 +1,50 @@
-# vrreg_module(name DEPS ...): library vrreg_<name> from src/<name>/*.cpp, public headers in
-# include/vrreg/<name>/. A module without sources yet is an INTERFACE library.
+# vrreg_module(name DEPS ... [PRIVATE_DEPS ...]): library vrreg_<name> from src/<name>/*.cpp, public
+# headers in include/vrreg/<name>/. A module without sources yet is an INTERFACE library.
+# DEPS are linked PUBLIC; PRIVATE_DEPS only into the module (a static library still passes them
+# to its users' link line, as LINK_ONLY). Each module joins the umbrella vrreg::vrreg and installs
+# and exports itself as vrreg::<name> (cmake/VrregPackage.cmake), so a new module needs no other edit.
+include(GNUInstallDirs)
+
 function(vrreg_module name)
-  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "DEPS;PRIVATE_DEPS" ${ARGN})
+  set(target vrreg_${name})
   file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*.cpp)
   if(sources)
-    add_library(vrreg_${name} STATIC ${sources})
-    target_include_directories(vrreg_${name} PUBLIC ${PROJECT_SOURCE_DIR}/include)
-    target_link_libraries(vrreg_${name} PUBLIC ${ARG_DEPS})
-    vrreg_set_warnings(vrreg_${name})
+    add_library(${target} STATIC ${sources})
+    set(scope PUBLIC)
+    target_link_libraries(${target} PRIVATE ${ARG_PRIVATE_DEPS})
+    # PIC so that a shared object (the Python bindings) can link the static libraries.
+    set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    vrreg_set_warnings(${target})
   else()
-    add_library(vrreg_${name} INTERFACE)
-    target_include_directories(vrreg_${name} INTERFACE ${PROJECT_SOURCE_DIR}/include)
-    target_link_libraries(vrreg_${name} INTERFACE ${ARG_DEPS})
+    add_library(${target} INTERFACE)
+    set(scope INTERFACE)
+    # No link step of its own: its users link what it would have linked privately.
+    target_link_libraries(${target} INTERFACE ${ARG_PRIVATE_DEPS})
   endif()
-  add_library(vrreg::${name} ALIAS vrreg_${name})
+  target_include_directories(${target} ${scope} $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
+                                                $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(${target} ${scope} ${ARG_DEPS})
+  # The headers are C++20: users of the installed package need it too.
+  target_compile_features(${target} ${scope} cxx_std_20)
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
+  add_library(vrreg::${name} ALIAS ${target})
+
+  if(NOT TARGET vrreg)
+    add_library(vrreg INTERFACE)
+    add_library(vrreg::vrreg ALIAS vrreg)
+    install(TARGETS vrreg EXPORT vrregTargets COMPONENT vrreg)
+  endif()
+  target_link_libraries(vrreg INTERFACE ${target})
+
+  install(TARGETS ${target} EXPORT vrregTargets COMPONENT vrreg
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  # Modules in declaration (= dependency) order and the external targets they link, for the
+  # package files (find_dependency, pkg-config Libs and Requires, .deb Depends).
+  set_property(GLOBAL APPEND PROPERTY VRREG_MODULES ${name})
+  foreach(dep IN LISTS ARG_DEPS ARG_PRIVATE_DEPS)
+    if(NOT dep MATCHES "^vrreg(_|::)")
+      set_property(GLOBAL APPEND PROPERTY VRREG_EXTERNAL_DEPS ${dep})
+    endif()
+  endforeach()
 endfunction()

@@ -17,6 +17,7 @@ packages=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev libtbb-dev libnanoflann-dev libqhull-dev
   libyaml-cpp-dev liborocos-kdl-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
+  file dpkg-dev  # cpack -G DEB: dpkg-shlibdeps computes the .deb's Depends (scripts/package.sh)
 )
 # Node.js and npm: the machine's own when there (any Node >= 18), else Debian's.
 if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi

@@ -14,6 +14,9 @@
 #ifndef VRREG_PLOTLY_JS_DEFAULT
 #define VRREG_PLOTLY_JS_DEFAULT "web/node_modules/plotly.js-dist-min/plotly.min.js"
 #endif
+#ifndef VRREG_PLOTLY_JS_FROM_BIN
+#define VRREG_PLOTLY_JS_FROM_BIN "../share/vrreg/plotly.min.js"
+#endif
 
 namespace vrreg::cli {
 namespace {
@@ -27,11 +30,24 @@ bool read_whole(const std::string& path, std::string& text) {
   return static_cast<bool>(in) || in.eof();
 }
 
+// The copy installed with the running command (cmake --install, the .deb), found from the
+// executable's own path; empty when there is none, as for a command run from its build tree.
+std::string installed_plotly_js() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  const std::filesystem::path path = exe.parent_path() / VRREG_PLOTLY_JS_FROM_BIN;
+  return std::filesystem::is_regular_file(path, ec) ? path.lexically_normal().string()
+                                                     : std::string();
+}
+
 }  // namespace
 
 std::string plotly_js_path() {
   const char* env = std::getenv("VRREG_PLOTLY_JS");
-  return env && *env ? std::string(env) : std::string(VRREG_PLOTLY_JS_DEFAULT);
+  if (env && *env) return env;
+  const std::string installed = installed_plotly_js();
+  return installed.empty() ? std::string(VRREG_PLOTLY_JS_DEFAULT) : installed;
 }
 
 std::string read_plotly_js() {

@@ -3,8 +3,9 @@
 // its --out DIR: finding the Plotly library, reading the inputs, writing the page atomically.
 //
 // The Plotly library (web/node_modules/plotly.js-dist-min/plotly.min.js, installed by
-// scripts/install-deps.sh with `npm ci` in web/) is found at $VRREG_PLOTLY_JS when set, else at
-// the path compiled in (VRREG_PLOTLY_JS_DEFAULT, the repository's copy).
+// scripts/install-deps.sh with `npm ci` in web/) is found at $VRREG_PLOTLY_JS when set, else
+// installed with the command (<bin>/../share/vrreg/plotly.min.js), else at the path compiled in
+// (VRREG_PLOTLY_JS_DEFAULT, the repository's copy).
 #include <cstddef>
 #include <nlohmann/json.hpp>
 #include <string>

@@ -1,0 +1,70 @@
+# Installs the headers and the CMake and pkg-config package files; include after the last
+# vrreg_module() (each module installs and exports itself there). docs/install.md shows the use.
+include(CMakePackageConfigHelpers)
+
+# The external targets a module may link: the package that defines it (find_dependency arguments),
+# its pkg-config module and its Debian -dev package. A module linking anything else fails here,
+# so the installed package never misses a dependency.
+set(vrreg_external_Eigen3 "Eigen3 3.4 NO_MODULE|eigen3|libeigen3-dev")
+set(vrreg_external_TBB "TBB|tbb|libtbb-dev")
+set(vrreg_external_nanoflann "nanoflann|nanoflann|libnanoflann-dev")
+set(vrreg_external_Qhull "Qhull|qhull_r|libqhull-dev")
+set(vrreg_external_yaml-cpp "yaml-cpp|yaml-cpp|libyaml-cpp-dev")
+set(vrreg_external_nlohmann_json "nlohmann_json 3.10|nlohmann_json|nlohmann-json3-dev")
+
+get_property(modules GLOBAL PROPERTY VRREG_MODULES)
+get_property(external_deps GLOBAL PROPERTY VRREG_EXTERNAL_DEPS)
+set(packages "")
+foreach(dep IN LISTS external_deps)
+  string(REGEX REPLACE "::.*" "" package "${dep}")
+  if(NOT DEFINED vrreg_external_${package})
+    message(FATAL_ERROR "a vrreg module links ${dep}: add its package to cmake/VrregPackage.cmake")
+  endif()
+  list(APPEND packages ${package})
+endforeach()
+list(REMOVE_DUPLICATES packages)
+
+set(VRREG_FIND_DEPENDENCIES "")
+set(pc_requires "")
+set(VRREG_DEB_DEV_DEPENDS "")  # read by cmake/VrregCPack.cmake
+foreach(package IN LISTS packages)
+  string(REPLACE "|" ";" fields "${vrreg_external_${package}}")
+  list(GET fields 0 find_args)
+  list(GET fields 1 pc_module)
+  list(GET fields 2 deb_package)
+  string(APPEND VRREG_FIND_DEPENDENCIES "find_dependency(${find_args})\n")
+  list(APPEND pc_requires ${pc_module})
+  list(APPEND VRREG_DEB_DEV_DEPENDS ${deb_package})
+endforeach()
+list(JOIN pc_requires ", " VRREG_PC_REQUIRES)
+
+# Static libraries link in reverse dependency order: the last module declared comes first.
+set(VRREG_PC_LIBS "")
+foreach(module IN LISTS modules)
+  get_target_property(type vrreg_${module} TYPE)
+  if(type STREQUAL "STATIC_LIBRARY")
+    set(VRREG_PC_LIBS "-lvrreg_${module} ${VRREG_PC_LIBS}")
+  endif()
+endforeach()
+
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        COMPONENT vrreg)
+
+set(cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/vrreg)
+install(EXPORT vrregTargets NAMESPACE vrreg:: DESTINATION ${cmake_dir} COMPONENT vrreg)
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/vrregConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/vrregConfig.cmake INSTALL_DESTINATION ${cmake_dir})
+# Before 1.0 a minor release may change the API, so only the same major.minor is compatible.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/vrregConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/vrregConfig.cmake ${PROJECT_BINARY_DIR}/vrregConfigVersion.cmake
+        DESTINATION ${cmake_dir} COMPONENT vrreg)
+
+# vrreg.pc finds its prefix from its own place (${pcfiledir}), so an installed tree can move.
+file(RELATIVE_PATH VRREG_PC_PREFIX_FROM_PCFILEDIR ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig
+     ${CMAKE_INSTALL_PREFIX})
+string(REGEX REPLACE "/$" "" VRREG_PC_PREFIX_FROM_PCFILEDIR "${VRREG_PC_PREFIX_FROM_PCFILEDIR}")
+string(STRIP "${VRREG_PC_LIBS}" VRREG_PC_LIBS)
+configure_file(${CMAKE_CURRENT_LIST_DIR}/vrreg.pc.in ${PROJECT_BINARY_DIR}/vrreg.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/vrreg.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
+        COMPONENT vrreg)
