@@ -29,7 +29,7 @@ void check_inputs(const CorrectionField& field, const ConstPoints3Ref& targets_s
                                       << " fiducials");
   VRREG_THROW_UNLESS(field.corrections_sensor_m.allFinite(),
                      "the model's fiducial corrections are not all finite");
-  const RigidTransform& T = field.T_robot_sensor;
+  const SimilarityTransform& T = field.T_robot_sensor;
   VRREG_THROW_UNLESS(T.rotation.allFinite() && T.translation_m.allFinite() &&
                          std::isfinite(T.scale) && T.scale > 0.0,
                      "the model's transform is not finite (scale " << T.scale << ")");
@@ -106,7 +106,7 @@ TargetCorrection correct_targets(const CorrectionField& field,
   }
   out.method_used = method;
 
-  const RigidTransform& T_robot_sensor = field.T_robot_sensor;
+  const SimilarityTransform& T_robot_sensor = field.T_robot_sensor;
   out.stencils.resize(static_cast<std::size_t>(n));
   out.corrections_sensor_m = Points3::Zero(3, n);
   out.corrected_sensor_m.resize(3, n);

@@ -6,7 +6,7 @@
 
 namespace vrreg {
 
-Points3 fiducial_corrections(const RigidTransform& T_robot_sensor,
+Points3 fiducial_corrections(const SimilarityTransform& T_robot_sensor,
                              const ConstPoints3Ref& fiducials_sensor_m,
                              const ConstPoints3Ref& fiducials_robot_m) {
   VRREG_THROW_UNLESS(fiducials_sensor_m.cols() == fiducials_robot_m.cols(),
@@ -20,7 +20,7 @@ Points3 fiducial_corrections(const RigidTransform& T_robot_sensor,
           std::isfinite(T_robot_sensor.scale) && T_robot_sensor.scale > 0.0,
       "fiducial corrections: the transform is not finite (scale " << T_robot_sensor.scale << ")");
   // Eq. 6: epsilon_j = R_inv Y_j + tau_inv - X_j with R_inv = R'/s, tau_inv = -R' tau / s.
-  const RigidTransform T_sensor_robot = T_robot_sensor.inverse();
+  const SimilarityTransform T_sensor_robot = T_robot_sensor.inverse();
   Points3 corrections_sensor_m(3, fiducials_sensor_m.cols());
   for (Eigen::Index j = 0; j < fiducials_sensor_m.cols(); ++j) {
     corrections_sensor_m.col(j) =

@@ -75,7 +75,7 @@ std::string format_model_json(const RegistrationModel& model) {
       model.corrections_sensor_m.cols() == static_cast<Eigen::Index>(model.fiducials.size()),
       "model: " << model.corrections_sensor_m.cols() << " corrections for "
                 << model.fiducials.size() << " fiducials");
-  const RigidTransform& T = model.T_robot_sensor;
+  const SimilarityTransform& T = model.T_robot_sensor;
   json out = json::object();
   out["format"] = "vrreg-model";
   out["version"] = RegistrationModel::kFormatVersion;

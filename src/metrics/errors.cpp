@@ -6,7 +6,7 @@
 
 namespace vrreg {
 
-Eigen::VectorXd target_registration_errors(const RigidTransform& T_robot_sensor,
+Eigen::VectorXd target_registration_errors(const SimilarityTransform& T_robot_sensor,
                                            const ConstPoints3Ref& targets_sensor_m,
                                            const ConstPoints3Ref& targets_robot_m) {
   VRREG_THROW_UNLESS(targets_sensor_m.cols() == targets_robot_m.cols(),

@@ -31,7 +31,7 @@ void RegistrationModel::validate() const {
                                       << " fiducials");
   VRREG_THROW_UNLESS(corrections_sensor_m.allFinite(),
                      "the model's fiducial corrections are not all finite");
-  const RigidTransform& T = T_robot_sensor;
+  const SimilarityTransform& T = T_robot_sensor;
   VRREG_THROW_UNLESS(T.rotation.allFinite() && T.translation_m.allFinite() &&
                          std::isfinite(T.scale) && T.scale > 0.0,
                      "the model's transform is not finite (scale " << T.scale << ")");

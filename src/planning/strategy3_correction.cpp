@@ -76,7 +76,7 @@ std::vector<Stencil> nearest_configuration_stencils(const std::vector<Location>&
   return out;
 }
 
-TargetCorrection correct_targets_strategy3(const RigidTransform& T_robot_sensor,
+TargetCorrection correct_targets_strategy3(const SimilarityTransform& T_robot_sensor,
                                            const std::vector<Location>& fiducials,
                                            const ConstPoints3Ref& corrections_sensor_m,
                                            const std::vector<Location>& targets,
@@ -99,7 +99,7 @@ TargetCorrection correct_targets_strategy3(const RigidTransform& T_robot_sensor,
   out.corrected_sensor_m.resize(3, n);
   out.corrected_robot_m.resize(3, n);
   out.uncorrected_robot_m.resize(3, n);
-  const RigidTransform& T = T_robot_sensor;
+  const SimilarityTransform& T = T_robot_sensor;
   for (Eigen::Index i = 0; i < n; ++i) {
     const Location& target = targets[static_cast<std::size_t>(i)];
     const Stencil& s = out.stencils[static_cast<std::size_t>(i)];

@@ -150,7 +150,7 @@ RegistrationResult register_rigid(const ConstPoints3Ref& points_sensor_m,
   result.collinearity = result.spread_m[1] / result.spread_m[0];
   Eigen::Vector3d d = Eigen::Vector3d::Ones();
   if ((svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0) d[2] = -1.0;
-  RigidTransform& t = result.T_robot_sensor;
+  SimilarityTransform& t = result.T_robot_sensor;
   t.rotation = svd.matrixV() * d.asDiagonal() * svd.matrixU().transpose();
   if (options.estimate_scale) {
     t.scale = singular_values.dot(d) / cxx.trace();

@@ -85,7 +85,7 @@ RobustRegistrationResult register_rigid_robust(const ConstPoints3Ref& points_sen
     const RegistrationResult fit = register_rigid(take(points_sensor_m, inlier),
                                                   take(points_robot_m, inlier),
                                                   options.registration);
-    const RigidTransform& t = fit.T_robot_sensor;
+    const SimilarityTransform& t = fit.T_robot_sensor;
     Eigen::VectorXd residuals(n);
     std::vector<double> inlier_residuals;
     for (Eigen::Index j = 0; j < n; ++j) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "vrreg/core/check.hpp"
+
 #include "vrreg_test.hpp"
 
 namespace vrreg {
@@ -46,14 +48,32 @@ TEST(Random, BelowStaysInRange) {
   for (int i = 0; i < 10000; ++i) EXPECT_LT(rng.below(7), 7u);
 }
 
-TEST(RigidTransform, InverseAndComposition) {
+TEST(RigidTransform, InverseCompositionAndIsometry) {
   Random rng(11);
-  RigidTransform t = testing::random_transform(rng, 2.0);
-  t.scale = 1.3;
+  const RigidTransform t = testing::random_transform(rng, 2.0);
   const Eigen::Vector3d p(0.1, -0.2, 0.3);
   EXPECT_EIGEN_NEAR(t.inverse().apply(t.apply(p)), p, 1e-15);
   const RigidTransform u = testing::random_transform(rng, 1.0);
   EXPECT_EIGEN_NEAR((t * u).apply(p), t.apply(u.apply(p)), 1e-14);
+  // The same map as an Eigen isometry, and back; (R, tau) construct it.
+  EXPECT_EIGEN_NEAR(t.isometry() * p, t.apply(p), 1e-15);
+  const RigidTransform back(t.isometry());
+  EXPECT_EIGEN_NEAR(back.rotation, t.rotation, 0.0);
+  EXPECT_EIGEN_NEAR(back.translation_m, t.translation_m, 0.0);
+  const RigidTransform from_parts(t.rotation, t.translation_m);
+  EXPECT_EIGEN_NEAR(from_parts.apply(p), t.apply(p), 0.0);
+}
+
+TEST(SimilarityTransform, InverseCompositionAndRigidPart) {
+  Random rng(13);
+  const SimilarityTransform t(testing::random_transform(rng, 2.0), 1.3);
+  const Eigen::Vector3d p(0.1, -0.2, 0.3);
+  EXPECT_EIGEN_NEAR(t.inverse().apply(t.apply(p)), p, 1e-15);
+  EXPECT_EIGEN_NEAR(t.apply(p), 1.3 * (t.rotation * p) + t.translation_m, 1e-15);
+  const SimilarityTransform u = testing::random_transform(rng, 1.0);
+  EXPECT_EIGEN_NEAR((t * u).apply(p), t.apply(u.apply(p)), 1e-14);
+  EXPECT_THROW((void)t.rigid(), InputError);  // a similarity is not a rigid transform
+  EXPECT_EIGEN_NEAR(u.rigid().apply(p), u.apply(p), 0.0);
 }
 
 }  // namespace

@@ -29,12 +29,13 @@ Eigen::Vector3d robot_error_m(const Eigen::Vector3d& p) {
 
 /// A correction field whose fiducials at fiducials_robot_m are measured with robot_error_m
 /// through T.
-CorrectionField make_model(const Points3& fiducials_robot_m, const RigidTransform& T_robot_sensor) {
+CorrectionField make_model(const Points3& fiducials_robot_m,
+                           const SimilarityTransform& T_robot_sensor) {
   CorrectionField model;
   model.T_robot_sensor = T_robot_sensor;
   model.fiducials_robot_m = fiducials_robot_m;
   Points3 sensor(3, fiducials_robot_m.cols());
-  const RigidTransform T_sensor_robot = T_robot_sensor.inverse();
+  const SimilarityTransform T_sensor_robot = T_robot_sensor.inverse();
   for (Eigen::Index j = 0; j < fiducials_robot_m.cols(); ++j) {
     const Eigen::Vector3d robot_m = fiducials_robot_m.col(j);
     sensor.col(j) = T_sensor_robot.apply(Eigen::Vector3d(robot_m + robot_error_m(robot_m)));
@@ -43,9 +44,9 @@ CorrectionField make_model(const Points3& fiducials_robot_m, const RigidTransfor
   return model;
 }
 
-Points3 measure(const Points3& targets_robot_m, const RigidTransform& T_robot_sensor) {
+Points3 measure(const Points3& targets_robot_m, const SimilarityTransform& T_robot_sensor) {
   Points3 out(3, targets_robot_m.cols());
-  const RigidTransform inv = T_robot_sensor.inverse();
+  const SimilarityTransform inv = T_robot_sensor.inverse();
   for (Eigen::Index i = 0; i < out.cols(); ++i) {
     out.col(i) =
         inv.apply(Eigen::Vector3d(targets_robot_m.col(i) + robot_error_m(targets_robot_m.col(i))));
@@ -224,8 +225,7 @@ TEST_F(CorrectTargets, RejectsUnusableInput) {
 }
 
 TEST_F(CorrectTargets, ScaleIsApplied) {
-  RigidTransform scaled = T;
-  scaled.scale = 1.002;
+  const SimilarityTransform scaled(T, 1.002);
   const CorrectionField m = make_model(a1.fiducials_robot_m, scaled);
   const Points3 sensor = measure(a1.targets_robot_m, scaled);
   const TargetCorrection c =

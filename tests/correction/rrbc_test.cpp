@@ -34,7 +34,7 @@ TEST(FiducialCorrections, MatchesHandComputation) {
 }
 
 TEST(FiducialCorrections, WithScaleDividesByIt) {
-  RigidTransform T;
+  SimilarityTransform T;
   T.scale = 2.0;
   T.translation_m = Eigen::Vector3d(0.1, 0.0, 0.0);
   Points3 x = Points3::Zero(3, 1);
@@ -47,8 +47,7 @@ TEST(FiducialCorrections, CorrectedFiducialsMapExactlyOntoRobotPositions) {
   Random rng(20240601);
   for (const double scale : {1.0, 0.999}) {
     for (int trial = 0; trial < 20; ++trial) {
-      RigidTransform T = random_transform(rng, 2.0);
-      T.scale = scale;
+      const SimilarityTransform T(random_transform(rng, 2.0), scale);
       const Points3 x = random_points(rng, 50, 0.3, Eigen::Vector3d(0.1, 2.0, -0.5));
       const Points3 y = random_points(rng, 50, 0.3, Eigen::Vector3d(0.4, 0.0, 0.2));
       const Points3 eps = fiducial_corrections(T, x, y);

@@ -55,7 +55,7 @@ TEST(Table2, TwoArmCell) {
   // Strategy 1, configuration 1: the registration of the file's label-1 fiducials.
   const std::vector<std::size_t> fid = set.select(Role::kFiducial, 1);
   const std::vector<std::size_t> tgt = set.select(Role::kTarget, 1);
-  const RigidTransform T =
+  const SimilarityTransform T =
       register_rigid(set.sensor_points(fid), set.robot_points(fid)).T_robot_sensor;
   const Eigen::VectorXd unc =
       (T.apply_all(set.sensor_points(tgt)) - set.robot_points(tgt)).colwise().norm().transpose();

@@ -142,8 +142,7 @@ TEST(RegisterRigid, ZeroWeightIgnoresAPoint) {
 TEST(RegisterRigid, RecoversUniformScaleWhenAsked) {
   Random rng(7);
   const Points3 x = random_points(rng, 25, 0.1);
-  RigidTransform truth = random_transform(rng, 1.0);
-  truth.scale = 1.0013;
+  const SimilarityTransform truth(random_transform(rng, 1.0), 1.0013);
   const Points3 y = truth.apply_all(x);
   RegistrationOptions options;
   options.estimate_scale = true;

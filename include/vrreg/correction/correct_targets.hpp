@@ -13,7 +13,7 @@ namespace vrreg {
 /// What RRBC interpolates (Eq. 6-8): the registration and, per fiducial, its nominal robot
 /// position, its correction and where it was read.
 struct CorrectionField {
-  RigidTransform T_robot_sensor;  ///< Y ~ R X + tau (Eq. 2)
+  SimilarityTransform T_robot_sensor;  ///< Y ~ R X + tau (Eq. 2)
   Points3 fiducials_robot_m;      ///< nominal robot positions of the fiducials [m]
   Points3 corrections_sensor_m;   ///< epsilon_j (Eq. 6) per fiducial, sensor frame [m]
   /// Where each fiducial was read (its file line: the visiting order), or empty when unknown.

@@ -10,7 +10,7 @@ namespace vrreg {
 /// epsilon_j = R' Y_j - R' tau - X_j (Eq. 6, divided by the scale when there is one): the shift
 /// that puts each measured fiducial X_j [m, sensor] where the registration says its robot
 /// position Y_j [m, robot] is. Returns one column per fiducial, sensor frame [m].
-Points3 fiducial_corrections(const RigidTransform& T_robot_sensor,
+Points3 fiducial_corrections(const SimilarityTransform& T_robot_sensor,
                              const ConstPoints3Ref& fiducials_sensor_m,
                              const ConstPoints3Ref& fiducials_robot_m);
 

@@ -7,7 +7,7 @@
 namespace vrreg {
 
 /// TRE(T_X) = ||R T_X + tau - T_Y|| per target (Eq. 3) [m]; targets in sensor / robot frame [m].
-Eigen::VectorXd target_registration_errors(const RigidTransform& T_robot_sensor,
+Eigen::VectorXd target_registration_errors(const SimilarityTransform& T_robot_sensor,
                                            const ConstPoints3Ref& targets_sensor_m,
                                            const ConstPoints3Ref& targets_robot_m);
 

@@ -17,7 +17,7 @@ namespace vrreg {
 /// Everything needed to correct new targets: the registration and the fiducial corrections.
 struct RegistrationModel {
   static constexpr int kFormatVersion = 1;
-  RigidTransform T_robot_sensor;     ///< Y ~ R X + tau (Eq. 2); scale 1 unless estimated
+  SimilarityTransform T_robot_sensor;     ///< Y ~ R X + tau (Eq. 2); scale 1 unless estimated
   std::vector<Location> fiducials;   ///< nominal robot and averaged sensor positions, labels, joints
   Points3 corrections_sensor_m;      ///< epsilon_j (Eq. 6), one column per fiducial, sensor frame
   InterpolationSettings interpolation;  ///< the default of evaluate and correct

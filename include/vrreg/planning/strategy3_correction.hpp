@@ -32,7 +32,7 @@ std::vector<Stencil> nearest_configuration_stencils(const std::vector<Location>&
 /// Corrects `targets` (their sensor_m, robot_m nominal and q_rad) with `fiducials` that hold all
 /// arm configurations and whose corrections [m, sensor] are against the single registration
 /// T_robot_sensor (Eq. 6, 7, 8). Flagged targets (missing corner) keep the uncorrected mapping.
-TargetCorrection correct_targets_strategy3(const RigidTransform& T_robot_sensor,
+TargetCorrection correct_targets_strategy3(const SimilarityTransform& T_robot_sensor,
                                            const std::vector<Location>& fiducials,
                                            const ConstPoints3Ref& corrections_sensor_m,
                                            const std::vector<Location>& targets,

@@ -18,7 +18,9 @@ struct RegistrationOptions {
 
 /// Result of register_rigid.
 struct RegistrationResult {
-  RigidTransform T_robot_sensor;        ///< maps sensor points onto robot points: Y ~ R X + tau
+  /// Maps sensor points onto robot points: Y ~ R X + tau (a similarity only with estimate_scale;
+  /// T_robot_sensor.rigid() is the rigid transform otherwise).
+  SimilarityTransform T_robot_sensor;
   double fre_m = 0.0;                   ///< FRE, Eq. 2 (weighted RMS when weights are given)
   Eigen::VectorXd residuals_m;          ///< ||R X_j + tau - Y_j|| per point
   /// RMS spread of the fiducials along the principal axes, largest first [m]: sqrt of the singular
