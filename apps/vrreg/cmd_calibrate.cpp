@@ -9,7 +9,7 @@
 #include "vrreg/core/check.hpp"
 #include "vrreg/experiments/testbed_calibration.hpp"
 #include "vrreg/io/atomic_write.hpp"
-#include "vrreg/io/error_model_file.hpp"
+#include "vrreg/robot_io/error_model_file.hpp"
 
 namespace vrreg::cli {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
-#include "vrreg/io/robot_file.hpp"
+#include "vrreg/robot_io/robot_file.hpp"
 #include "vrreg/kinematics/pose.hpp"
 
 namespace vrreg::cli {

@@ -10,7 +10,7 @@
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/experiments/testbed_calibration.hpp"
 #include "vrreg/io/measurement_csv.hpp"
-#include "vrreg/io/simulation_csv.hpp"
+#include "vrreg/robot_io/simulation_csv.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
 #include "vrreg/planning/strategy2_labels.hpp"
 #include "vrreg/registration/rigid.hpp"

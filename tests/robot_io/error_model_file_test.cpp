@@ -1,6 +1,6 @@
 // Error-model files of the simulated test beds: round trip, partial files over the defaults,
 // YAML, and one-line errors naming the file, key (and line for YAML).
-#include "vrreg/io/error_model_file.hpp"
+#include "vrreg/robot_io/error_model_file.hpp"
 
 #include <gtest/gtest.h>
 

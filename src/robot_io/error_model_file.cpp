@@ -1,4 +1,4 @@
-#include "vrreg/io/error_model_file.hpp"
+#include "vrreg/robot_io/error_model_file.hpp"
 
 #include <cmath>
 #include <cstdio>

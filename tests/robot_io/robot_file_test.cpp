@@ -1,4 +1,4 @@
-#include "vrreg/io/robot_file.hpp"
+#include "vrreg/robot_io/robot_file.hpp"
 
 #include <gtest/gtest.h>
 

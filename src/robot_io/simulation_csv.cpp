@@ -1,4 +1,4 @@
-#include "vrreg/io/simulation_csv.hpp"
+#include "vrreg/robot_io/simulation_csv.hpp"
 
 #include <cstdio>
 #include <sstream>
