@@ -15,7 +15,7 @@ done
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libcli11-dev nlohmann-json3-dev libtbb-dev libnanoflann-dev libqhull-dev
-  libyaml-cpp-dev liborocos-kdl-dev
+  libyaml-cpp-dev libfmt-dev liborocos-kdl-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   file dpkg-dev  # cpack -G DEB: dpkg-shlibdeps computes the .deb's Depends (scripts/package.sh)
 )

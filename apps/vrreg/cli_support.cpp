@@ -9,28 +9,19 @@
 
 namespace vrreg::cli {
 
-std::string mm(double metres, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, units::m_to_mm(metres));
-  return buf;
-}
-
-std::string mm3(const Eigen::Vector3d& metres, int decimals) {
-  return "[" + mm(metres[0], decimals) + ", " + mm(metres[1], decimals) + ", " +
-         mm(metres[2], decimals) + "]";
-}
-
 nlohmann::json json_mm3(const Eigen::Vector3d& metres) {
   return {units::m_to_mm(metres[0]), units::m_to_mm(metres[1]), units::m_to_mm(metres[2])};
 }
 
 void InterpolationFlags::add_to(CLI::App& command) {
-  command.add_option("--interpolation", method,
-                     "how corrections reach targets: auto (grid if the fiducials hold a complete "
-                     "grid, else scattered), grid, scattered, octuplet")
+  command
+      .add_option("--interpolation", method,
+                  "how corrections reach targets: auto (grid if the fiducials hold a complete "
+                  "grid, else scattered), grid, scattered, octuplet")
       ->check(CLI::IsMember({"auto", "grid", "scattered", "octuplet"}));
-  command.add_option("--cube-mm", cube_mm,
-                     "octuplet cube edge in mm (fiducials at the 8 corners around each target)")
+  command
+      .add_option("--cube-mm", cube_mm,
+                  "octuplet cube edge in mm (fiducials at the 8 corners around each target)")
       ->check(CLI::PositiveNumber);
 }
 

@@ -1,21 +1,17 @@
 #pragma once
 // Small helpers shared by the commands: millimetre formatting, option parsing glue.
+#include <CLI/CLI.hpp>
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-#include <Eigen/Core>
-#include <nlohmann/json.hpp>
-
+#include "vrreg/core/format.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
 
 namespace vrreg::cli {
 
-/// "0.626" style: a length in metres printed in mm with `decimals` places.
-std::string mm(double metres, int decimals = 3);
-/// "[x, y, z]" in mm.
-std::string mm3(const Eigen::Vector3d& metres, int decimals = 3);
 /// A JSON array of a 3-vector in mm.
 nlohmann::json json_mm3(const Eigen::Vector3d& metres);
 

@@ -69,18 +69,22 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
     return;
   }
   std::printf("evaluated %d targets from %s with model %s%s\n", s.n_targets, args.targets.c_str(),
-              args.model.c_str(), config ? (" (config " + std::to_string(*config) + ")").c_str() : "");
+              args.model.c_str(),
+              config ? (" (config " + std::to_string(*config) + ")").c_str() : "");
   print_strategy(model, relabelled);
-  std::printf("  interpolation                 %s: %s\n", to_string(c.method_used), c.layout.c_str());
+  std::printf("  interpolation                 %s: %s\n", to_string(c.method_used),
+              c.layout.c_str());
   if (c.n_flagged > 0) {
-    std::printf("  not correctable               %d targets (outside the fiducials; left uncorrected)\n",
-                c.n_flagged);
+    std::printf(
+        "  not correctable               %d targets (outside the fiducials; left uncorrected)\n",
+        c.n_flagged);
   }
   std::printf("                                uncorrected  corrected (RRBC)\n");
-  std::printf("  RMS_T                         %8s mm  %8s mm\n", mm(s.unc_rms_t_m).c_str(),
-              mm(s.cor_rms_t_m).c_str());
+  std::printf("  RMS_T                         %8s mm  %8s mm\n", format_mm(s.unc_rms_t_m).c_str(),
+              format_mm(s.cor_rms_t_m).c_str());
   std::printf("  max TRE                       %8s mm  %8s mm\n",
-              mm(unc.size() ? unc.maxCoeff() : 0.0).c_str(), mm(cor.size() ? cor.maxCoeff() : 0.0).c_str());
+              format_mm(unc.size() ? unc.maxCoeff() : 0.0).c_str(),
+              format_mm(cor.size() ? cor.maxCoeff() : 0.0).c_str());
   std::printf("  gamma = (unc - cor) / unc     %.1f %%\n", 100.0 * s.gamma);
   std::printf("  N_bad (TRE got worse)         %d of %d", s.n_bad, s.n_targets);
   if (!bad.empty()) {
@@ -89,7 +93,8 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
     if (bad.size() > 10) std::printf(" ...");
   }
   std::printf("\n");
-  if (!args.per_target.empty()) std::printf("  per-target errors written to %s\n", args.per_target.c_str());
+  if (!args.per_target.empty())
+    std::printf("  per-target errors written to %s\n", args.per_target.c_str());
 }
 
 void run_evaluate(const EvaluateArgs& args) {
@@ -106,8 +111,9 @@ void run_evaluate(const EvaluateArgs& args) {
 void add_evaluate_command(CLI::App& app) {
   auto args = std::make_shared<EvaluateArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "evaluate", "measure a model's accuracy on targets measured in both frames: TRE and RMS_T "
-                  "uncorrected and RRBC-corrected (paper Eq. 3, 4, 7, 8)");
+      "evaluate",
+      "measure a model's accuracy on targets measured in both frames: TRE and RMS_T "
+      "uncorrected and RRBC-corrected (paper Eq. 3, 4, 7, 8)");
   cmd->add_option("--model", args->model, "model JSON written by 'vrreg register -o'")->required();
   cmd->add_option("--targets", args->targets, "measurement CSV; its target rows are used")
       ->required();

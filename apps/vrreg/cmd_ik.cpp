@@ -7,6 +7,7 @@
 #include "command_registry.hpp"
 #include "robot_cli.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/inverse_kinematics.hpp"
 #include "vrreg/kinematics/lwr_psi_intervals.hpp"
@@ -54,11 +55,7 @@ Eigen::Isometry3d target_pose(const IkArgs& args) {
   return t;
 }
 
-std::string degrees_text(double rad) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6f", units::rad_to_deg(rad));
-  return buf;
-}
+std::string degrees_text(double rad) { return format_fixed(units::rad_to_deg(rad), 6); }
 
 void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
                  const Eigen::Isometry3d& t, const IkResult& r,

@@ -75,8 +75,8 @@ void run_register_unchecked(const RegisterArgs& args) {
     j["source"] = args.fiducials;
     j["config"] = args.config ? nlohmann::json(*args.config) : nlohmann::json(nullptr);
     j["n_fiducials"] = n_registered;
-    j["rotation"] = {{r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)},
-                     {r(2, 0), r(2, 1), r(2, 2)}};
+    j["rotation"] = {
+        {r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)}, {r(2, 0), r(2, 1), r(2, 2)}};
     j["translation_mm"] = json_mm3(model.T_robot_sensor.translation_m);
     j["scale"] = model.T_robot_sensor.scale;
     j["fre_mm"] = units::m_to_mm(reg.fre_m);
@@ -100,28 +100,32 @@ void run_register_unchecked(const RegisterArgs& args) {
   std::printf("  rotation R (sensor -> robot)  [% .9f % .9f % .9f]\n", r(0, 0), r(0, 1), r(0, 2));
   std::printf("                                [% .9f % .9f % .9f]\n", r(1, 0), r(1, 1), r(1, 2));
   std::printf("                                [% .9f % .9f % .9f]\n", r(2, 0), r(2, 1), r(2, 2));
-  std::printf("  translation tau               %s mm\n", mm3(model.T_robot_sensor.translation_m).c_str());
+  std::printf("  translation tau               %s mm\n",
+              format_mm3(model.T_robot_sensor.translation_m).c_str());
   if (args.scale) std::printf("  scale                         %.9f\n", model.T_robot_sensor.scale);
-  std::printf("  FRE                           %s mm  (fit residual, not target accuracy: run evaluate)\n",
-              mm(reg.fre_m).c_str());
+  std::printf(
+      "  FRE                           %s mm  (fit residual, not target accuracy: run evaluate)\n",
+      format_mm(reg.fre_m).c_str());
   std::printf("  sigma_L                       %s mm  (rigid-body condition over %lld pairs)\n",
-              mm(rb.sigma_l_m).c_str(), static_cast<long long>(rb.pairs));
+              format_mm(rb.sigma_l_m).c_str(), static_cast<long long>(rb.pairs));
   if (sigma_opt) {
     std::printf("  sigma_opt                     %s mm  (per axis, from repeat readings)\n",
-                mm(*sigma_opt).c_str());
+                format_mm(*sigma_opt).c_str());
   }
   if (sigma_noise) {
     std::printf("  sigma_noise                   %s mm  (sigma_rep = %s mm%s)\n",
-                mm(*sigma_noise).c_str(), mm(units::mm_to_m(args.sigma_rep_mm.value_or(0.0))).c_str(),
+                format_mm(*sigma_noise).c_str(),
+                format_mm(units::mm_to_m(args.sigma_rep_mm.value_or(0.0))).c_str(),
                 args.sigma_rep_mm ? "" : ", not given: use --sigma-rep-mm");
   }
   if (rho_value) {
     std::printf("  rho = sigma_L / sigma_noise   %.2f  %s%s\n", *rho_value,
-                *rho_value > kRhoThreshold ? "(> 2.5: systematic error dominates, RRBC should help)"
-                                           : "(<= 2.5: noise dominates, RRBC is not expected to help)",
+                *rho_value > kRhoThreshold
+                    ? "(> 2.5: systematic error dominates, RRBC should help)"
+                    : "(<= 2.5: noise dominates, RRBC is not expected to help)",
                 args.sigma_rep_mm ? "" : "; an upper bound without --sigma-rep-mm");
   }
-  std::printf("  spread (principal axes)       %s mm\n", mm3(reg.spread_m, 1).c_str());
+  std::printf("  spread (principal axes)       %s mm\n", format_mm3(reg.spread_m, 1).c_str());
   if (!rejected.empty()) {
     std::printf("  rejected as outliers          %zu:", rejected.size());
     for (const auto& p : rejected) std::printf(" %s", p.c_str());
@@ -133,8 +137,9 @@ void run_register_unchecked(const RegisterArgs& args) {
 void add_register_command(CLI::App& app) {
   auto args = std::make_shared<RegisterArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "register", "register the fiducials of a measurement file (sensor -> robot, paper Eq. 2) "
-                  "and compute their RRBC corrections (Eq. 6)");
+      "register",
+      "register the fiducials of a measurement file (sensor -> robot, paper Eq. 2) "
+      "and compute their RRBC corrections (Eq. 6)");
   cmd->add_option("--fiducials", args->fiducials, "measurement CSV; its fiducial rows are used")
       ->required();
   cmd->add_option("--config", args->config, "use only rows with this configuration label");

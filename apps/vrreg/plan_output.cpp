@@ -5,17 +5,14 @@
 
 #include "cli_support.hpp"
 #include "robot_cli.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/pose.hpp"
 
 namespace vrreg::cli {
 namespace {
 
-std::string fixed(double value, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
-  return buf;
-}
+std::string fixed(double value, int decimals) { return format_fixed(value, decimals); }
 
 std::string degrees_list(const Eigen::Ref<const Eigen::VectorXd>& q_rad) {
   std::string out;
@@ -83,15 +80,15 @@ std::vector<std::string> plan_comments(const PlanArgs& args, const PlanSetup& se
       "tool_rpy_deg: " + rpy_deg_text(o.arm.R_base_tcp, 3) +
           " (fixed TCP orientation in the robot base frame, R = Rz(yaw) Ry(pitch) Rx(roll))",
       "psi_deg: " + psi_text(setup),
-      "halfwidth_mm: " + mm(c.requested_halfwidth_m) + " requested, " + mm(c.halfwidth_m) +
-          " covered (part point at the centre of a grid cell)",
-      "spacing_mm: " + mm(c.spacing_m),
+      "halfwidth_mm: " + format_mm(c.requested_halfwidth_m) + " requested, " +
+          format_mm(c.halfwidth_m) + " covered (part point at the centre of a grid cell)",
+      "spacing_mm: " + format_mm(c.spacing_m),
       "nodes_per_axis: " + std::to_string(c.nodes_per_axis) + " (" + std::to_string(c.n_nodes()) +
           " fiducials per part point)",
-      "d_min_mm: " + mm(c.d_min_m()) + " (sqrt(3)/2 A, target to its 8 nearest fiducials)",
-      "d_max_mm: " + mm(c.d_max_m()),
-      "sigma_noise_mm: " + mm(o.sigma_noise_m) + " (" + sigma_source(args) + ")",
-      "eq9: d_min > 2.5 sigma_noise = " + mm(plan.dmin.threshold_m) +
+      "d_min_mm: " + format_mm(c.d_min_m()) + " (sqrt(3)/2 A, target to its 8 nearest fiducials)",
+      "d_max_mm: " + format_mm(c.d_max_m()),
+      "sigma_noise_mm: " + format_mm(o.sigma_noise_m) + " (" + sigma_source(args) + ")",
+      "eq9: d_min > 2.5 sigma_noise = " + format_mm(plan.dmin.threshold_m) +
           " mm: " + (plan.dmin.ok ? "ok" : "FAILED, forced"),
       std::string("joints: IK solution nearest the part point's joints, norm ") +
           kinematics::to_string(o.arm.norm) +
@@ -104,9 +101,9 @@ std::vector<std::string> plan_comments(const PlanArgs& args, const PlanSetup& se
   out.push_back("order: cubes " + visit_order(plan) +
                 "; serpentine inside each cube (consecutive fiducials one grid step apart), the "
                 "target between two corners of its cell");
-  out.push_back("travel_mm: inside cubes " + mm(plan.within_cubes_m, 1) + ", between cubes " +
-                mm(plan.between_cubes_m, 1) +
-                " (input order: " + mm(plan.naive_between_cubes_m, 1) + ")");
+  out.push_back("travel_mm: inside cubes " + format_mm(plan.within_cubes_m, 1) +
+                ", between cubes " + format_mm(plan.between_cubes_m, 1) +
+                " (input order: " + format_mm(plan.naive_between_cubes_m, 1) + ")");
   out.push_back(
       "rows: visiting order; add sensor_x_mm,sensor_y_mm,sensor_z_mm (and drop part) "
       "to make a measurement CSV");
@@ -192,15 +189,15 @@ void print_plan_summary(const PlanArgs& args, const PlanSetup& setup,
   std::printf(
       "  placement tolerance   S = %s mm asked, %s mm covered (%d cells of A per axis: the "
       "part point at a cell centre)\n",
-      mm(c.requested_halfwidth_m).c_str(), mm(c.halfwidth_m).c_str(), n - 1);
+      format_mm(c.requested_halfwidth_m).c_str(), format_mm(c.halfwidth_m).c_str(), n - 1);
   std::printf("  grid spacing          A = %s mm: %d x %d x %d = %lld fiducials per part point\n",
-              mm(c.spacing_m).c_str(), n, n, n, c.n_nodes());
+              format_mm(c.spacing_m).c_str(), n, n, n, c.n_nodes());
   std::printf("  target-fiducial d     d_min = %s mm (8 nearest, sqrt(3)/2 A), d_max = %s mm\n",
-              mm(c.d_min_m()).c_str(), mm(c.d_max_m()).c_str());
+              format_mm(c.d_min_m()).c_str(), format_mm(c.d_max_m()).c_str());
   std::printf(
       "  Eq. 9                 d_min %s 2.5 sigma_noise = %s mm: %s (sigma_noise = %s mm, %s)\n",
-      plan.dmin.ok ? ">" : "<=", mm(plan.dmin.threshold_m).c_str(),
-      plan.dmin.ok ? "ok" : "FAILED (forced)", mm(o.sigma_noise_m).c_str(),
+      plan.dmin.ok ? ">" : "<=", format_mm(plan.dmin.threshold_m).c_str(),
+      plan.dmin.ok ? "ok" : "FAILED (forced)", format_mm(o.sigma_noise_m).c_str(),
       sigma_source(args).c_str());
   std::printf(
       "  joints                each fiducial: the IK solution nearest its part point's "
@@ -210,7 +207,8 @@ void print_plan_summary(const PlanArgs& args, const PlanSetup& setup,
               "configuration (index label)", "fiducials", "other config", "max dq deg", "visit");
   for (const planning::PartPlan& p : plan.parts) {
     std::printf("  %-12s %10s %10s %10s  %-40s %9lld %12lld %11.3f %5d\n", p.name.c_str(),
-                mm(p.robot_m.x()).c_str(), mm(p.robot_m.y()).c_str(), mm(p.robot_m.z()).c_str(),
+                format_mm(p.robot_m.x()).c_str(), format_mm(p.robot_m.y()).c_str(),
+                format_mm(p.robot_m.z()).c_str(),
                 (std::to_string(p.config.index()) + " " + p.config.to_string()).c_str(),
                 p.n_fiducials, p.n_other_config, units::rad_to_deg(p.max_joint_distance_rad),
                 p.visit_rank + 1);
@@ -221,8 +219,8 @@ void print_plan_summary(const PlanArgs& args, const PlanSetup& setup,
               plan.parts.size() == 1 ? "" : "s");
   std::printf(
       "  travel                %s mm inside cubes, %s mm between cubes (input order: %s mm)\n",
-      mm(plan.within_cubes_m, 1).c_str(), mm(plan.between_cubes_m, 1).c_str(),
-      mm(plan.naive_between_cubes_m, 1).c_str());
+      format_mm(plan.within_cubes_m, 1).c_str(), format_mm(plan.between_cubes_m, 1).c_str(),
+      format_mm(plan.naive_between_cubes_m, 1).c_str());
   for (const auto& [a, b] : plan.overlapping) {
     std::printf("  note: the cubes of %s and %s overlap or touch\n",
                 plan.parts[static_cast<std::size_t>(a)].name.c_str(),

@@ -4,9 +4,10 @@
 #include <cstdio>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
-#include "vrreg/robot_io/robot_file.hpp"
 #include "vrreg/kinematics/pose.hpp"
+#include "vrreg/robot_io/robot_file.hpp"
 
 namespace vrreg::cli {
 
@@ -52,18 +53,15 @@ void pose_to_json(const Eigen::Isometry3d& pose, nlohmann::json& j) {
 }
 
 std::string xyz_mm_text(const Eigen::Vector3d& metres, int decimals) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%.*f %.*f %.*f", decimals, units::m_to_mm(metres.x()), decimals,
-                units::m_to_mm(metres.y()), decimals, units::m_to_mm(metres.z()));
-  return buf;
+  return format_mm(metres.x(), decimals) + " " + format_mm(metres.y(), decimals) + " " +
+         format_mm(metres.z(), decimals);
 }
 
 std::string rpy_deg_text(const Eigen::Matrix3d& rotation, int decimals) {
   const Eigen::Vector3d rpy = kinematics::rpy_from_rotation(rotation);
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%.*f %.*f %.*f", decimals, units::rad_to_deg(rpy(0)), decimals,
-                units::rad_to_deg(rpy(1)), decimals, units::rad_to_deg(rpy(2)));
-  return buf;
+  return format_fixed(units::rad_to_deg(rpy(0)), decimals) + " " +
+         format_fixed(units::rad_to_deg(rpy(1)), decimals) + " " +
+         format_fixed(units::rad_to_deg(rpy(2)), decimals);
 }
 
 nlohmann::json singular_json(std::uint8_t flags) {

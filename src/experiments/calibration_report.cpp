@@ -4,6 +4,7 @@
 #include <functional>
 #include <string>
 
+#include "vrreg/core/format.hpp"
 #include "vrreg/experiments/testbed_calibration.hpp"
 
 namespace vrreg::experiments {
@@ -23,12 +24,6 @@ double median_of(const std::vector<Seed>& seeds, const std::function<double(cons
   std::vector<double> v;
   for (const Seed& s : seeds) v.push_back(get(s));
   return median(v);
-}
-
-std::string fmt(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
 }
 
 bool monotone(const Ur5SeedFigures& s) {
@@ -53,8 +48,8 @@ std::vector<Check> checks(const CalibrationReport& r) {
   std::vector<Check> out;
   const auto band = [&](const std::string& name, double value, double lo, double hi,
                         const char* unit) {
-    out.push_back({name, fmt("%.2f", lo) + " - " + fmt("%.2f", hi) + unit,
-                   fmt("%.3f", value) + unit, value >= lo && value <= hi});
+    out.push_back({name, format_fixed(lo, 2) + " - " + format_fixed(hi, 2) + unit,
+                   format_fixed(value, 3) + unit, value >= lo && value <= hi});
   };
   if (!r.ur5.empty()) {
     using S = Ur5SeedFigures;
@@ -85,7 +80,7 @@ std::vector<Check> checks(const CalibrationReport& r) {
       hi = std::max(hi, v);
     }
     out.push_back({"KUKA Strategy 1: largest / smallest configuration RMS_T", ">= 1.5",
-                   fmt("%.2f", hi / lo), hi / lo >= 1.5});
+                   format_fixed(hi / lo, 2), hi / lo >= 1.5});
   }
   return out;
 }
@@ -100,38 +95,40 @@ void ur5_tables(const std::vector<Ur5SeedFigures>& seeds, std::string& md) {
       "| B cor 5 mm | B gamma 5 mm % | B N_bad 50 / 5 mm | B monotone |\n";
   md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const S& s : seeds) {
-    md += "| " + std::to_string(s.seed) + " | " + fmt("%.3f", kMm * s.a1.sigma_opt_m) + " | " +
-          fmt("%.3f", kMm * s.a1.sigma_l_m) + " | " + fmt("%.1f", s.a1.rho) + " | " +
-          fmt("%.3f", kMm * s.a1.unc_rms_t_m) + " | " + fmt("%.3f", kMm * s.a1.cor_rms_t_m) +
-          " | " + fmt("%.0f", 100 * s.a1.gamma) + " | " + fmt("%.3f", kMm * s.a2.sigma_l_m) +
-          " | " + fmt("%.3f", kMm * s.a2.unc_rms_t_m) + " | " +
-          fmt("%.3f", kMm * s.a2.cor_rms_t_m) + " | " + fmt("%.0f", 100 * s.a2.gamma) + " | " +
-          fmt("%.3f", kMm * s.b_unc_rms_t_m) + " | " + fmt("%.3f", kMm * s.b_cor_rms_t_m.front()) +
-          " | " + fmt("%.3f", kMm * s.b_cor_rms_t_m.back()) + " | " + fmt("%.0f", b_gamma_min(s)) +
+    md += "| " + std::to_string(s.seed) + " | " + format_fixed(kMm * s.a1.sigma_opt_m, 3) + " | " +
+          format_fixed(kMm * s.a1.sigma_l_m, 3) + " | " + format_fixed(s.a1.rho, 1) + " | " +
+          format_fixed(kMm * s.a1.unc_rms_t_m, 3) + " | " +
+          format_fixed(kMm * s.a1.cor_rms_t_m, 3) + " | " + format_fixed(100 * s.a1.gamma, 0) +
+          " | " + format_fixed(kMm * s.a2.sigma_l_m, 3) + " | " +
+          format_fixed(kMm * s.a2.unc_rms_t_m, 3) + " | " +
+          format_fixed(kMm * s.a2.cor_rms_t_m, 3) + " | " + format_fixed(100 * s.a2.gamma, 0) +
+          " | " + format_fixed(kMm * s.b_unc_rms_t_m, 3) + " | " +
+          format_fixed(kMm * s.b_cor_rms_t_m.front(), 3) + " | " +
+          format_fixed(kMm * s.b_cor_rms_t_m.back(), 3) + " | " + format_fixed(b_gamma_min(s), 0) +
           " | " + std::to_string(s.b_n_bad.front()) + " / " + std::to_string(s.b_n_bad.back()) +
           " | " + (monotone(s) ? "yes" : "no") + " |\n";
   }
-  const auto med = [&](const std::function<double(const S&)>& get, const char* f) {
-    return fmt(f, median_of<S>(seeds, get));
+  const auto med = [&](const std::function<double(const S&)>& get, int decimals) {
+    return format_fixed(median_of<S>(seeds, get), decimals);
   };
   int mono = 0;
   for (const S& s : seeds) mono += monotone(s) ? 1 : 0;
-  md += "| **median** | " + med([](const S& s) { return kMm * s.a1.sigma_opt_m; }, "%.3f") + " | " +
-        med([](const S& s) { return kMm * s.a1.sigma_l_m; }, "%.3f") + " | " +
-        med([](const S& s) { return s.a1.rho; }, "%.1f") + " | " +
-        med([](const S& s) { return kMm * s.a1.unc_rms_t_m; }, "%.3f") + " | " +
-        med([](const S& s) { return kMm * s.a1.cor_rms_t_m; }, "%.3f") + " | " +
-        med([](const S& s) { return 100 * s.a1.gamma; }, "%.0f") + " | " +
-        med([](const S& s) { return kMm * s.a2.sigma_l_m; }, "%.3f") + " | " +
-        med([](const S& s) { return kMm * s.a2.unc_rms_t_m; }, "%.3f") + " | " +
-        med([](const S& s) { return kMm * s.a2.cor_rms_t_m; }, "%.3f") + " | " +
-        med([](const S& s) { return 100 * s.a2.gamma; }, "%.0f") + " | " +
-        med([](const S& s) { return kMm * s.b_unc_rms_t_m; }, "%.3f") + " | " +
-        med([](const S& s) { return kMm * s.b_cor_rms_t_m.front(); }, "%.3f") + " | " +
-        med([](const S& s) { return kMm * s.b_cor_rms_t_m.back(); }, "%.3f") + " | " +
-        med(b_gamma_min, "%.0f") + " | " +
-        med([](const S& s) { return double(s.b_n_bad.front()); }, "%.1f") + " / " +
-        med([](const S& s) { return double(s.b_n_bad.back()); }, "%.1f") + " | " +
+  md += "| **median** | " + med([](const S& s) { return kMm * s.a1.sigma_opt_m; }, 3) + " | " +
+        med([](const S& s) { return kMm * s.a1.sigma_l_m; }, 3) + " | " +
+        med([](const S& s) { return s.a1.rho; }, 1) + " | " +
+        med([](const S& s) { return kMm * s.a1.unc_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return kMm * s.a1.cor_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return 100 * s.a1.gamma; }, 0) + " | " +
+        med([](const S& s) { return kMm * s.a2.sigma_l_m; }, 3) + " | " +
+        med([](const S& s) { return kMm * s.a2.unc_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return kMm * s.a2.cor_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return 100 * s.a2.gamma; }, 0) + " | " +
+        med([](const S& s) { return kMm * s.b_unc_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return kMm * s.b_cor_rms_t_m.front(); }, 3) + " | " +
+        med([](const S& s) { return kMm * s.b_cor_rms_t_m.back(); }, 3) + " | " +
+        med(b_gamma_min, 0) + " | " +
+        med([](const S& s) { return double(s.b_n_bad.front()); }, 1) + " / " +
+        med([](const S& s) { return double(s.b_n_bad.back()); }, 1) + " | " +
         std::to_string(mono) + " of " + std::to_string(seeds.size()) + " |\n";
   md +=
       "| paper | 0.058 | 0.626 | 5.5 | 0.666 | 0.240 | 64 | 0.522 | 0.603 | 0.168 | 72 | 0.650 "
@@ -139,16 +136,16 @@ void ur5_tables(const std::vector<Ur5SeedFigures>& seeds, std::string& md) {
 
   md += "B, medians over seeds, per cube edge:\n\n| cube edge mm |";
   const std::vector<double>& edges = seeds.front().b_cube_edge_m;
-  for (double e : edges) md += " " + fmt("%.0f", kMm * e) + " |";
+  for (double e : edges) md += " " + format_fixed(kMm * e, 0) + " |";
   md += "\n|---|";
   for (std::size_t i = 0; i < edges.size(); ++i) md += "---|";
   md += "\n| cor RMS_T mm |";
   for (std::size_t i = 0; i < edges.size(); ++i) {
-    md += " " + med([i](const S& s) { return kMm * s.b_cor_rms_t_m[i]; }, "%.3f") + " |";
+    md += " " + med([i](const S& s) { return kMm * s.b_cor_rms_t_m[i]; }, 3) + " |";
   }
   md += "\n| N_bad |";
   for (std::size_t i = 0; i < edges.size(); ++i) {
-    md += " " + med([i](const S& s) { return double(s.b_n_bad[i]); }, "%.1f") + " |";
+    md += " " + med([i](const S& s) { return double(s.b_n_bad[i]); }, 1) + " |";
   }
   int fewer_bad = 0;
   for (const S& s : seeds) fewer_bad += s.b_n_bad.back() < s.b_n_bad.front() ? 1 : 0;
@@ -171,29 +168,31 @@ void lwr4_table(const std::vector<Lwr4SeedFigures>& seeds, bool strategy2, std::
       "| unc 4 | cor 1 | cor 2 | cor 3 | cor 4 | gamma % 1 | gamma % 2 | gamma % 3 | gamma % 4 |\n";
   md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const S& s : seeds) {
-    md += "| " + std::to_string(s.seed) + " | " + fmt("%.1f", 100 * s.switched_points_fraction) +
-          " | " + fmt("%.1f", 100 * s.switched_locations_fraction);
-    for (std::size_t m = 0; m < 4; ++m) md += " | " + fmt("%.3f", kMm * pick(s, m).sigma_l_m);
-    for (std::size_t m = 0; m < 4; ++m) md += " | " + fmt("%.3f", kMm * pick(s, m).unc_rms_t_m);
-    for (std::size_t m = 0; m < 4; ++m) md += " | " + fmt("%.3f", kMm * pick(s, m).cor_rms_t_m);
-    for (std::size_t m = 0; m < 4; ++m) md += " | " + fmt("%.0f", 100 * pick(s, m).gamma);
+    md += "| " + std::to_string(s.seed) + " | " +
+          format_fixed(100 * s.switched_points_fraction, 1) + " | " +
+          format_fixed(100 * s.switched_locations_fraction, 1);
+    for (std::size_t m = 0; m < 4; ++m) md += " | " + format_fixed(kMm * pick(s, m).sigma_l_m, 3);
+    for (std::size_t m = 0; m < 4; ++m) md += " | " + format_fixed(kMm * pick(s, m).unc_rms_t_m, 3);
+    for (std::size_t m = 0; m < 4; ++m) md += " | " + format_fixed(kMm * pick(s, m).cor_rms_t_m, 3);
+    for (std::size_t m = 0; m < 4; ++m) md += " | " + format_fixed(100 * pick(s, m).gamma, 0);
     md += " |\n";
   }
   md += "| **median** | " +
-        fmt("%.1f",
-            median_of<S>(seeds, [](const S& s) { return 100 * s.switched_points_fraction; })) +
+        format_fixed(
+            median_of<S>(seeds, [](const S& s) { return 100 * s.switched_points_fraction; }), 1) +
         " | " +
-        fmt("%.1f",
-            median_of<S>(seeds, [](const S& s) { return 100 * s.switched_locations_fraction; }));
-  const auto med = [&](std::size_t m, double scale, double RrbcRunFigures::*field, const char* f) {
-    return fmt(f, median_of<S>(seeds, [&](const S& s) { return scale * (pick(s, m).*field); }));
+        format_fixed(
+            median_of<S>(seeds, [](const S& s) { return 100 * s.switched_locations_fraction; }), 1);
+  const auto med = [&](std::size_t m, double scale, double RrbcRunFigures::*field, int decimals) {
+    return format_fixed(
+        median_of<S>(seeds, [&](const S& s) { return scale * (pick(s, m).*field); }), decimals);
   };
-  for (std::size_t m = 0; m < 4; ++m) md += " | " + med(m, kMm, &RrbcRunFigures::sigma_l_m, "%.3f");
+  for (std::size_t m = 0; m < 4; ++m) md += " | " + med(m, kMm, &RrbcRunFigures::sigma_l_m, 3);
   for (std::size_t m = 0; m < 4; ++m)
-    md += " | " + med(m, kMm, &RrbcRunFigures::unc_rms_t_m, "%.3f");
+    md += " | " + med(m, kMm, &RrbcRunFigures::unc_rms_t_m, 3);
   for (std::size_t m = 0; m < 4; ++m)
-    md += " | " + med(m, kMm, &RrbcRunFigures::cor_rms_t_m, "%.3f");
-  for (std::size_t m = 0; m < 4; ++m) md += " | " + med(m, 100.0, &RrbcRunFigures::gamma, "%.0f");
+    md += " | " + med(m, kMm, &RrbcRunFigures::cor_rms_t_m, 3);
+  for (std::size_t m = 0; m < 4; ++m) md += " | " + med(m, 100.0, &RrbcRunFigures::gamma, 0);
   md += " |\n";
   md += strategy2
             ? "| paper | 14 | - | 0.558 | 0.604 | 0.476 | 0.373 | 0.637 | 0.716 | 0.489 | 0.398 "

@@ -1,5 +1,7 @@
 #include "vrreg/experiments/findings.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,13 +12,6 @@
 
 namespace vrreg::experiments {
 namespace {
-
-template <typename... Args>
-std::string format(const char* f, Args... args) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, f, args...);
-  return buffer;
-}
 
 Finding make(const char* id, const char* statement) {
   Finding f;
@@ -33,7 +28,7 @@ Finding gamma_a2_above_a1(const Reproduction& r) {
   f.evaluated = true;
   f.value = g2 - g1;
   f.met = g2 > g1;
-  f.detail = format("gamma(A2) %.1f %% vs gamma(A1) %.1f %%", g2, g1);
+  f.detail = fmt::format("gamma(A2) {:.1f} % vs gamma(A1) {:.1f} %", g2, g1);
   return f;
 }
 
@@ -49,7 +44,7 @@ Finding cor_falls_with_d(const Reproduction& r) {
   f.evaluated = true;
   f.value = spearman_rank_correlation(d, cor);
   f.met = f.value >= kSpearmanThreshold;  // false for NaN
-  f.detail = format("Spearman %.3f over %zu cube sizes", f.value, d.size());
+  f.detail = fmt::format("Spearman {:.3f} over {} cube sizes", f.value, d.size());
   return f;
 }
 
@@ -60,7 +55,7 @@ Finding fewer_bad_at_d_min(const Reproduction& r) {
   f.evaluated = true;
   f.value = hi - lo;
   f.met = lo < hi;
-  f.detail = format("N_bad %d at d_min vs %d at d_max", lo, hi);
+  f.detail = fmt::format("N_bad {} at d_min vs {} at d_max", lo, hi);
   return f;
 }
 
@@ -86,7 +81,8 @@ Finding strategies_beat_1(const Reproduction& r) {
   }
   f.value = worst;
   f.met = worst < 1.0;
-  f.detail = format("configurations %s: max(S2, S3) / S1 = %.2f at worst", configs.c_str(), worst);
+  f.detail =
+      fmt::format("configurations {}: max(S2, S3) / S1 = {:.2f} at worst", configs.c_str(), worst);
   return f;
 }
 
@@ -104,7 +100,7 @@ Finding strategy3_largest_gamma(const Reproduction& r) {
   }
   f.value = margin;
   f.met = margin > 0.0;
-  f.detail = format("gamma(S3) - max(gamma(S1), gamma(S2)) >= %.1f points", margin);
+  f.detail = fmt::format("gamma(S3) - max(gamma(S1), gamma(S2)) >= {:.1f} points", margin);
   return f;
 }
 
@@ -120,8 +116,8 @@ Finding uniform_over_configurations(const Reproduction& r) {
   f.value = std::max(s2, s3);
   f.met =
       s2 < kUniformSpreadFraction && s3 < kUniformSpreadFraction && s1 >= kUniformSpreadFraction;
-  f.detail =
-      format("spread / mean: S1 %.0f %%, S2 %.0f %%, S3 %.0f %%", 100 * s1, 100 * s2, 100 * s3);
+  f.detail = fmt::format("spread / mean: S1 {:.0f} %, S2 {:.0f} %, S3 {:.0f} %", 100 * s1, 100 * s2,
+                         100 * s3);
   return f;
 }
 

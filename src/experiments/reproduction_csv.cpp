@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "vrreg/core/format.hpp"
 #include "vrreg/experiments/paper_numbers.hpp"
 
 namespace vrreg::experiments {
@@ -13,9 +14,7 @@ constexpr double kMm = 1e3;
 // Shortest round-trip-ish text of a number; empty for NaN.
 std::string num(double v) {
   if (std::isnan(v)) return "";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.10g", v);
-  return buffer;
+  return format_general(v, 10);
 }
 
 std::string mean_of(const CellTable& t, const std::string& pointer) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "vrreg/core/format.hpp"
+
 namespace vrreg::experiments::text {
 namespace {
 
@@ -39,9 +41,7 @@ std::string TextTable::str(int indent) const {
 
 std::string decimal_text(double value, int decimals) {
   if (std::isnan(value)) return "-";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
+  return format_fixed(value, decimals);
 }
 
 }  // namespace vrreg::experiments::text

@@ -1,7 +1,6 @@
 #include "vrreg/io/results_csv.hpp"
 
-#include <sstream>
-
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 
@@ -12,29 +11,40 @@ std::string config_field(const std::optional<int>& config) {
   return config ? std::to_string(*config) : std::string();
 }
 
-void put_mm3(std::ostringstream& out, const Points3& points_m, Eigen::Index n) {
-  for (int a = 0; a < 3; ++a) out << ',' << units::m_to_mm(points_m(a, n));
+// A length in mm with `significant` digits, as the files have always been written ("%.10g").
+void put_mm(std::string& out, double length_m, int significant) {
+  out += format_general(units::m_to_mm(length_m), significant);
+}
+
+void put_mm3(std::string& out, const Points3& points_m, Eigen::Index n, int significant) {
+  for (int a = 0; a < 3; ++a) {
+    out += ',';
+    put_mm(out, points_m(a, n), significant);
+  }
 }
 
 }  // namespace
 
 std::string format_per_target_csv(const EvaluateResult& r) {
-  std::ostringstream out;
-  out.precision(10);
-  out << "point,config,status,unc_tre_mm,cor_tre_mm,delta_tre_mm,"
-         "corrected_robot_x_mm,corrected_robot_y_mm,corrected_robot_z_mm,"
-         "correction_x_mm,correction_y_mm,correction_z_mm\n";
+  constexpr int kDigits = 10;
+  std::string out =
+      "point,config,status,unc_tre_mm,cor_tre_mm,delta_tre_mm,"
+      "corrected_robot_x_mm,corrected_robot_y_mm,corrected_robot_z_mm,"
+      "correction_x_mm,correction_y_mm,correction_z_mm\n";
   for (std::size_t k = 0; k < r.names.size(); ++k) {
     const auto n = static_cast<Eigen::Index>(k);
-    out << r.names[k] << ',' << config_field(r.configs[k]) << ','
-        << to_string(r.correction.stencils[k].status) << ',' << units::m_to_mm(r.unc_tre_m[n])
-        << ',' << units::m_to_mm(r.cor_tre_m[n]) << ','
-        << units::m_to_mm(r.cor_tre_m[n] - r.unc_tre_m[n]);
-    put_mm3(out, r.correction.corrected_robot_m, n);
-    put_mm3(out, r.correction.corrections_sensor_m, n);
-    out << '\n';
+    out += r.names[k] + ',' + config_field(r.configs[k]) + ',' +
+           to_string(r.correction.stencils[k].status) + ',';
+    put_mm(out, r.unc_tre_m[n], kDigits);
+    out += ',';
+    put_mm(out, r.cor_tre_m[n], kDigits);
+    out += ',';
+    put_mm(out, r.cor_tre_m[n] - r.unc_tre_m[n], kDigits);
+    put_mm3(out, r.correction.corrected_robot_m, n, kDigits);
+    put_mm3(out, r.correction.corrections_sensor_m, n, kDigits);
+    out += '\n';
   }
-  return out.str();
+  return out;
 }
 
 void write_per_target_csv(const std::string& path, const EvaluateResult& result) {
@@ -43,24 +53,23 @@ void write_per_target_csv(const std::string& path, const EvaluateResult& result)
 
 std::string format_corrected_csv(const CorrectResult& r, const std::string& model_name,
                                  const std::string& points_name) {
+  constexpr int kDigits = 12;
   const TargetCorrection& c = r.correction;
-  std::ostringstream out;
-  out.precision(12);
-  out << "# vrreg correct: model " << model_name << ", points " << points_name
-      << ", interpolation " << to_string(c.method_used) << " (" << c.layout << ")\n";
-  out << "point,config,status,robot_x_mm,robot_y_mm,robot_z_mm,"
-         "uncorrected_robot_x_mm,uncorrected_robot_y_mm,uncorrected_robot_z_mm,"
-         "correction_x_mm,correction_y_mm,correction_z_mm\n";
+  std::string out = "# vrreg correct: model " + model_name + ", points " + points_name +
+                    ", interpolation " + to_string(c.method_used) + " (" + c.layout + ")\n";
+  out +=
+      "point,config,status,robot_x_mm,robot_y_mm,robot_z_mm,"
+      "uncorrected_robot_x_mm,uncorrected_robot_y_mm,uncorrected_robot_z_mm,"
+      "correction_x_mm,correction_y_mm,correction_z_mm\n";
   for (std::size_t k = 0; k < r.names.size(); ++k) {
     const auto n = static_cast<Eigen::Index>(k);
-    out << r.names[k] << ',' << config_field(r.configs[k]) << ','
-        << to_string(c.stencils[k].status);
-    put_mm3(out, c.corrected_robot_m, n);
-    put_mm3(out, c.uncorrected_robot_m, n);
-    put_mm3(out, c.corrections_sensor_m, n);
-    out << '\n';
+    out += r.names[k] + ',' + config_field(r.configs[k]) + ',' + to_string(c.stencils[k].status);
+    put_mm3(out, c.corrected_robot_m, n, kDigits);
+    put_mm3(out, c.uncorrected_robot_m, n, kDigits);
+    put_mm3(out, c.corrections_sensor_m, n, kDigits);
+    out += '\n';
   }
-  return out.str();
+  return out;
 }
 
 void write_corrected_csv(const std::string& path, const CorrectResult& result,

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/joint_vector.hpp"
 
@@ -57,12 +58,7 @@ bool solve_pm(const Eigen::Matrix3d& r, double tolerance, double free_c, double&
   return singular;
 }
 
-std::string mm(double m) {
-  std::ostringstream s;
-  s.precision(6);
-  s << units::m_to_mm(m) << " mm";
-  return s.str();
-}
+std::string mm(double m) { return format_general(units::m_to_mm(m), 6) + " mm"; }
 
 }  // namespace
 

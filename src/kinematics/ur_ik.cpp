@@ -15,6 +15,7 @@
 
 #include "limits_fit.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/inverse_kinematics.hpp"
 #include "vrreg/kinematics/pose.hpp"
@@ -56,12 +57,7 @@ struct Branch {
 // frame 1 (y1 up): px * (-a2 a3 sin q3) > 0; px = 0 counts as positive (a measure-zero tie).
 bool elbow_up(double px, double cross) { return (px >= 0.0 ? cross : -cross) > 0.0; }
 
-std::string mm(double m) {
-  std::ostringstream s;
-  s.precision(6);
-  s << units::m_to_mm(m) << " mm";
-  return s.str();
-}
+std::string mm(double m) { return format_general(units::m_to_mm(m), 6) + " mm"; }
 
 }  // namespace
 

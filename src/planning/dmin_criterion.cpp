@@ -1,9 +1,9 @@
 #include "vrreg/planning/dmin_criterion.hpp"
 
 #include <cmath>
-#include <iomanip>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 
 namespace vrreg::planning {
@@ -26,14 +26,12 @@ DminCheck check_dmin(double d_min_m, double sigma_noise_m, bool force) {
   check.forced = !check.ok && force;
   VRREG_THROW_UNLESS(
       check.ok || force,
-      std::fixed << std::setprecision(3) << "d_min = " << units::m_to_mm(d_min_m)
-                 << " mm is not above 2.5 * sigma_noise = " << units::m_to_mm(check.threshold_m)
-                 << " mm (sigma_noise = " << units::m_to_mm(sigma_noise_m)
-                 << " mm; paper Eq. 9): fiducials this close to the target see "
-                    "mostly noise and RRBC is not expected to help; use a grid "
-                    "spacing above "
-                 << units::m_to_mm(min_spacing_for_noise_m(sigma_noise_m))
-                 << " mm, or force the plan");
+      "d_min = " << format_mm(d_min_m)
+                 << " mm is not above 2.5 * sigma_noise = " << format_mm(check.threshold_m)
+                 << " mm (sigma_noise = " << format_mm(sigma_noise_m)
+                 << " mm; paper Eq. 9): fiducials this close to the target see mostly noise and "
+                    "RRBC is not expected to help; use a grid spacing above "
+                 << format_mm(min_spacing_for_noise_m(sigma_noise_m)) << " mm, or force the plan");
   return check;
 }
 

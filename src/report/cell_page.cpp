@@ -3,19 +3,16 @@
 #include <cstdio>
 #include <map>
 
-#include "vrreg/report/cell_report.hpp"
 #include "charts.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/metrics/errors.hpp"
+#include "vrreg/report/cell_report.hpp"
 
 namespace vrreg::report {
 namespace {
 
-std::string num(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
-}
-std::string mm(double metres) { return num(metres * 1e3, 3) + " mm"; }
+std::string num(double value, int decimals) { return format_fixed(value, decimals); }
+std::string mm(double metres) { return format_mm(metres) + " mm"; }
 std::string opt_mm(const std::optional<double>& m) { return m ? mm(*m) : "—"; }
 
 ReportTable summary_table(const CellReportInput& in, const CellAnalysis& a) {
@@ -32,8 +29,8 @@ ReportTable summary_table(const CellReportInput& in, const CellAnalysis& a) {
       {"σ_noise (Eq. 9)", opt_mm(a.noise.sigma_noise_m)},
       {"ρ = σ_L / σ_noise", a.noise.rho ? num(*a.noise.rho, 2) : "—"},
       {"targets evaluated (N)", std::to_string(s.n_targets)},
-      {"interpolation",
-       std::string(to_string(in.evaluation.correction.method_used)) + ": " + in.evaluation.correction.layout},
+      {"interpolation", std::string(to_string(in.evaluation.correction.method_used)) + ": " +
+                            in.evaluation.correction.layout},
       {"uncorrected RMS_T (Eq. 4)", mm(s.unc_rms_t_m)},
       {"corrected RMS_T (RRBC, Eq. 7-8)", mm(s.cor_rms_t_m)},
       {"γ = (unc − cor) / unc", num(100.0 * s.gamma, 1) + " %"},
@@ -200,9 +197,11 @@ nlohmann::json cell_volume_traces(const CellReportInput& in, const CellAnalysis&
 ReportPage cell_report_page(const CellReportInput& in, const CellAnalysis& a) {
   ReportPage page;
   page.title = "vrreg report — " + in.targets_name;
-  page.subtitle = "Registration model " + in.model_name + ", targets " + in.targets_name +
-                  (in.evaluation.config ? " (configuration " + std::to_string(*in.evaluation.config) + ")" : "") +
-                  ". Lengths in mm; equations as numbered in the NIST paper.";
+  page.subtitle =
+      "Registration model " + in.model_name + ", targets " + in.targets_name +
+      (in.evaluation.config ? " (configuration " + std::to_string(*in.evaluation.config) + ")"
+                            : "") +
+      ". Lengths in mm; equations as numbered in the NIST paper.";
   page.verdict = cell_verdict(in, a);
 
   ReportSection summary{"Summary", {}, {summary_table(in, a)}, {}};

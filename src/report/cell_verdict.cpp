@@ -1,41 +1,38 @@
 // The cell report's verdict in words: is RRBC expected to help (rho against 2.5, section 5.1),
 // did it (gamma), where did it fail (N_bad), what was left out (flagged targets).
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <string>
 
-#include "vrreg/report/cell_report.hpp"
 #include "vrreg/metrics/noise.hpp"
+#include "vrreg/report/cell_report.hpp"
 
 namespace vrreg::report {
 namespace {
-
-std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer, fmt, a, b, c);
-  return buffer;
-}
 
 ReportVerdict rho_verdict(const CellAnalysis& a) {
   const double sl = a.rigid_body.sigma_l_m * 1e3;
   if (!a.noise.rho) {
     return {Tone::kInfo,
-            format("ρ unknown: σ_L = %.3f mm, but the fiducials have no repeat readings to "
-                   "estimate the sensor noise and no robot repeatability was given "
-                   "(--sigma-rep-mm), so ρ = σ_L / σ_noise cannot be judged against 2.5.",
-                   sl)};
+            fmt::format("ρ unknown: σ_L = {:.3f} mm, but the fiducials have no repeat readings to "
+                        "estimate the sensor noise and no robot repeatability was given "
+                        "(--sigma-rep-mm), so ρ = σ_L / σ_noise cannot be judged against 2.5.",
+                        sl)};
   }
   const double noise = *a.noise.sigma_noise_m * 1e3;
   if (*a.noise.rho > kRhoThreshold) {
     return {Tone::kGood,
-            format("ρ = σ_L / σ_noise = %.3f / %.3f mm = %.2f > 2.5: the deviation from "
-                   "a rigid body is mostly systematic robot error, which RRBC can remove.",
-                   sl, noise, *a.noise.rho)};
+            fmt::format("ρ = σ_L / σ_noise = {:.3f} / {:.3f} mm = {:.2f} > 2.5: the deviation from "
+                        "a rigid body is mostly systematic robot error, which RRBC can remove.",
+                        sl, noise, *a.noise.rho)};
   }
-  return {Tone::kWarn,
-          format("ρ = σ_L / σ_noise = %.3f / %.3f mm = %.2f ≤ 2.5: the deviation from a "
-                 "rigid body is close to the noise level, so RRBC is not expected to help; a gain "
-                 "below may not hold on new targets.",
-                 sl, noise, *a.noise.rho)};
+  return {
+      Tone::kWarn,
+      fmt::format("ρ = σ_L / σ_noise = {:.3f} / {:.3f} mm = {:.2f} ≤ 2.5: the deviation from a "
+                  "rigid body is close to the noise level, so RRBC is not expected to help; a gain "
+                  "below may not hold on new targets.",
+                  sl, noise, *a.noise.rho)};
 }
 
 }  // namespace
@@ -52,15 +49,17 @@ std::vector<ReportVerdict> cell_verdict(const CellReportInput& input, const Cell
   }
   const std::string n = std::to_string(s.n_targets);
   if (s.gamma > 0.0) {
-    v.push_back({Tone::kGood, format("RRBC lowered RMS_T from %.3f mm to %.3f mm: γ = %.0f %%", unc,
-                                     cor, 100.0 * s.gamma) +
-                                  " over " + n + " targets."});
+    v.push_back(
+        {Tone::kGood, fmt::format("RRBC lowered RMS_T from {:.3f} mm to {:.3f} mm: γ = {:.0f} %",
+                                  unc, cor, 100.0 * s.gamma) +
+                          " over " + n + " targets."});
   } else {
     v.push_back(
-        {Tone::kBad, format("RRBC did not lower RMS_T (%.3f mm uncorrected, %.3f mm corrected, γ = "
-                            "%.0f %%)",
-                            unc, cor, 100.0 * s.gamma) +
-                         " over " + n + " targets: do not use its corrections for this cell."});
+        {Tone::kBad,
+         fmt::format("RRBC did not lower RMS_T ({:.3f} mm uncorrected, {:.3f} mm corrected, γ = "
+                     "{:.0f} %)",
+                     unc, cor, 100.0 * s.gamma) +
+             " over " + n + " targets: do not use its corrections for this cell."});
   }
   if (s.n_bad == 0) {
     v.push_back({Tone::kGood, "N_bad = 0: RRBC made no target worse."});
@@ -71,11 +70,12 @@ std::vector<ReportVerdict> cell_verdict(const CellReportInput& input, const Cell
     }
     const auto w = static_cast<std::size_t>(worst);
     const bool few = 10 * s.n_bad <= s.n_targets;
-    v.push_back({few ? Tone::kInfo : Tone::kWarn,
-                 "N_bad = " + std::to_string(s.n_bad) + " of " + n +
-                     " targets got worse with RRBC (the most: " + a.labels[w] +
-                     format(", +%.3f mm). ", (a.cor_tre_m[worst] - a.unc_tre_m[worst]) * 1e3) +
-                     "Where: " + a.where_bad + "."});
+    v.push_back(
+        {few ? Tone::kInfo : Tone::kWarn,
+         "N_bad = " + std::to_string(s.n_bad) + " of " + n +
+             " targets got worse with RRBC (the most: " + a.labels[w] +
+             fmt::format(", +{:.3f} mm). ", (a.cor_tre_m[worst] - a.unc_tre_m[worst]) * 1e3) +
+             "Where: " + a.where_bad + "."});
   }
   if (input.evaluation.correction.n_flagged > 0) {
     v.push_back({Tone::kWarn, std::to_string(input.evaluation.correction.n_flagged) + " of " + n +
@@ -85,9 +85,9 @@ std::vector<ReportVerdict> cell_verdict(const CellReportInput& input, const Cell
   if (s.n_targets > 0) {
     Eigen::Index k = 0;
     const double worst = a.cor_tre_m.maxCoeff(&k);
-    v.push_back({Tone::kInfo, format("Largest corrected TRE: %.3f mm", worst * 1e3) + " at " +
-                                  a.labels[static_cast<std::size_t>(k)] +
-                                  format(" (uncorrected %.3f mm).", a.unc_tre_m[k] * 1e3)});
+    v.push_back({Tone::kInfo, fmt::format("Largest corrected TRE: {:.3f} mm", worst * 1e3) +
+                                  " at " + a.labels[static_cast<std::size_t>(k)] +
+                                  fmt::format(" (uncorrected {:.3f} mm).", a.unc_tre_m[k] * 1e3)});
   }
   return v;
 }

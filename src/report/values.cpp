@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/format.hpp"
 
 namespace vrreg::report::detail {
 namespace {
@@ -81,11 +82,7 @@ std::vector<std::string> strings_at(const nlohmann::json& obj, const std::string
   return out;
 }
 
-std::string fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
-}
+std::string fixed(double value, int decimals) { return format_fixed(value, decimals); }
 
 std::string stat_text(const std::optional<Stat>& value, int decimals) {
   if (!value) return "—";

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "vrreg/core/format.hpp"
 #include "vrreg/report/cell_report.hpp"
 
 namespace vrreg::report {
@@ -12,11 +13,7 @@ namespace {
 
 constexpr double kLayerToleranceM = 0.5e-3;  // targets within 0.5 mm in z share a layer
 
-std::string mm1(double metres) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.1f", metres * 1e3);
-  return buffer;
-}
+std::string mm1(double metres) { return format_mm(metres, 1); }
 
 struct Bucket {
   std::string name;  // "on the lowest layer (z = 175.0 mm)"

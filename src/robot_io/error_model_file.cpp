@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "robot_file_document.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
@@ -27,11 +28,7 @@ constexpr double kArcminPerDegree = 60.0;
 
 // A value in file units, rounded to 12 significant digits so that unit conversions do not show
 // up as 14.999999999999998 (and writing what was read gives the same text).
-double human(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.12g", value);
-  return std::strtod(buffer, nullptr);
-}
+double human(double value) { return std::strtod(format_general(value, 12).c_str(), nullptr); }
 
 json list(const std::vector<double>& values, double scale) {
   json out = json::array();

@@ -1,8 +1,10 @@
 #include "vrreg/robot_io/simulation_csv.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/pose.hpp"
 
@@ -12,20 +14,13 @@ namespace {
 using units::m_to_mm;
 using units::rad_to_deg;
 
-std::string join(const std::vector<double>& values, double scale, int precision) {
-  std::ostringstream out;
-  out.precision(precision);
-  out << '[';
-  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values[i] * scale;
-  out << ']';
-  return out.str();
-}
+std::string g(double value, int precision = 6) { return format_general(value, precision); }
 
-std::string g(double value, int precision = 6) {
-  std::ostringstream out;
-  out.precision(precision);
-  out << value;
-  return out.str();
+std::string join(const std::vector<double>& values, double scale, int precision) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i)
+    out += (i ? ", " : "") + g(values[i] * scale, precision);
+  return out + "]";
 }
 
 void describe_errors(const simulation::TestbedErrorModel& errors, std::vector<std::string>& out) {
@@ -57,12 +52,14 @@ void describe_robot(const simulation::SimulatedDataset& data, std::vector<std::s
   out.push_back("drawn robot (actual - nominal DH, transmission phase):");
   for (std::size_t i = 0; i < data.robot.dh_delta.size(); ++i) {
     const kinematics::DhRow& d = data.robot.dh_delta[i];
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "  joint %zu: dtheta %+.5f deg, da %+.4f mm, dd %+.4f mm, dalpha %+.5f deg",
-                  i + 1, rad_to_deg(d.theta_offset_rad), m_to_mm(d.a_m), m_to_mm(d.d_m),
-                  rad_to_deg(d.alpha_rad));
-    std::string text = line;
+    const auto signed_fixed = [](double v, int decimals) {
+      return (std::signbit(v) ? "" : "+") + format_fixed(v, decimals);  // printf's %+f
+    };
+    std::string text = "  joint " + std::to_string(i + 1) + ": dtheta " +
+                       signed_fixed(rad_to_deg(d.theta_offset_rad), 5) + " deg, da " +
+                       signed_fixed(m_to_mm(d.a_m), 4) + " mm, dd " +
+                       signed_fixed(m_to_mm(d.d_m), 4) + " mm, dalpha " +
+                       signed_fixed(rad_to_deg(d.alpha_rad), 5) + " deg";
     if (i < data.robot.transmission_phase_rad.size()) {
       text += ", phase " + g(rad_to_deg(data.robot.transmission_phase_rad[i]), 5) + " deg";
     }

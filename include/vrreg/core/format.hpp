@@ -1,0 +1,19 @@
+#pragma once
+// Number formatting for messages, tables and files: one place (fmt underneath), so that every
+// command and report prints a length the same way. Lengths come in metres (SI inside) and are
+// printed in millimetres, like the paper.
+#include <Eigen/Core>
+#include <string>
+
+namespace vrreg {
+
+/// `value` with `decimals` places after the point ("%.*f").
+std::string format_fixed(double value, int decimals);
+/// `value` with at most `significant` significant digits, shortest of fixed or exponent ("%.*g").
+std::string format_general(double value, int significant);
+/// A length in metres printed in millimetres with `decimals` places: "0.626".
+std::string format_mm(double length_m, int decimals = 3);
+/// A 3-vector in metres printed in millimetres: "[x, y, z]".
+std::string format_mm3(const Eigen::Vector3d& v_m, int decimals = 3);
+
+}  // namespace vrreg
