@@ -6,10 +6,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "progress_bar.hpp"
+#include "report_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/experiments/reproduction_csv.hpp"
 #include "vrreg/experiments/reproduction_json.hpp"
@@ -28,6 +30,7 @@ struct ReproduceArgs {
   bool json = false;
   bool quiet = false;
   bool check = false;
+  bool no_report = false;
 };
 
 // Every output file of --out, written whole or not at all.
@@ -58,6 +61,19 @@ std::vector<std::string> write_outputs(const std::string& dir,
   return names;
 }
 
+// The HTML report of `dir` (as `vrreg report --reproduce DIR` writes it); without the charting
+// library it says why on stderr and the figure data stand alone.
+std::optional<std::string> write_report(const std::string& dir, const nlohmann::json& doc) {
+  const std::string path = (std::filesystem::path(dir) / "report.html").string();
+  try {
+    write_reproduce_report(doc, (std::filesystem::path(dir) / "reproduce.json").string(), "", path);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "reproduce: no HTML report: %s\n", e.what());
+    return std::nullopt;
+  }
+  return path;
+}
+
 void run_reproduce(const ReproduceArgs& args) {
   namespace ex = experiments;
   VRREG_THROW_UNLESS(args.seeds >= 1 && args.seeds <= 1000,
@@ -86,6 +102,8 @@ void run_reproduce(const ReproduceArgs& args) {
   const nlohmann::json doc = ex::reproduction_json(runs);
   const std::vector<std::string> written =
       args.out.empty() ? std::vector<std::string>{} : write_outputs(args.out, runs, table, doc);
+  const std::optional<std::string> report =
+      args.out.empty() || args.no_report ? std::nullopt : write_report(args.out, doc);
 
   bool all_met = true;
   const std::vector<ex::FindingRate> rates = ex::finding_rates(findings);
@@ -114,6 +132,7 @@ void run_reproduce(const ReproduceArgs& args) {
       for (const std::string& name : written) std::printf(" %s", name.c_str());
       std::printf("\n");
     }
+    if (report) std::printf("HTML report (opens offline in a browser): %s\n", report->c_str());
   }
   std::fflush(stdout);
   if (!args.quiet) {
@@ -143,6 +162,8 @@ void add_reproduce_command(CLI::App& app) {
                   "figure11_delta_tre.csv, table2.csv, histograms_l.csv, tre_per_target.csv and "
                   "reproduce.json (empty: write nothing)")
       ->capture_default_str();
+  cmd->add_flag("--no-report", args->no_report,
+                "do not write report.html (the charts of 'vrreg report --reproduce DIR') to --out");
   cmd->add_flag("--json", args->json, "print reproduce.json instead of the tables");
   cmd->add_flag("--quiet", args->quiet, "no progress bar or timing on stderr");
   cmd->add_flag("--check", args->check,

@@ -45,6 +45,11 @@ TEST_F(ReproduceCli, PrintsTablesBesideThePaperAndWritesTheFigureData) {
     EXPECT_TRUE(fs::exists(dir_ / "out" / name)) << name;
   }
   EXPECT_TRUE(read_text(dir_ / "out" / "table2.csv").starts_with("config,strategy,sigma_l_mm,"));
+  // The HTML report beside the figure data, named in the output.
+  EXPECT_NE(r.out.find("HTML report (opens offline in a browser): " + out_dir() + "/report.html"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(read_text(dir_ / "out" / "report.html").find("<html"), std::string::npos);
   const json written = json::parse(read_text(dir_ / "out" / "reproduce.json"));
   const CliResult again =
       run_vrreg("reproduce --json --quiet --out '" + (dir_ / "again").string() + "'");
@@ -52,6 +57,22 @@ TEST_F(ReproduceCli, PrintsTablesBesideThePaperAndWritesTheFigureData) {
   EXPECT_TRUE(again.err.empty()) << again.err;
   EXPECT_EQ(json::parse(again.out), written)
       << "--json prints reproduce.json; same seed, same data";
+}
+
+TEST_F(ReproduceCli, WithoutTheChartingLibraryTheDataStandAlone) {
+  const CliResult r = run_vrreg_in({}, "reproduce --only lwr4 --out '" + out_dir() + "'",
+                                   "VRREG_PLOTLY_JS=/nonexistent/plotly.js");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("reproduce: no HTML report: the Plotly library is missing"),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "reproduce.json"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "report.html"));
+  const CliResult skipped = run_vrreg("reproduce --only lwr4 --no-report --quiet --out '" +
+                                      (dir_ / "skipped").string() + "'");
+  ASSERT_EQ(skipped.status, 0) << skipped.err;
+  EXPECT_TRUE(skipped.err.empty()) << skipped.err;
+  EXPECT_FALSE(fs::exists(dir_ / "skipped" / "report.html"));
 }
 
 TEST_F(ReproduceCli, JsonShape) {
