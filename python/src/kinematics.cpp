@@ -1,0 +1,90 @@
+// Forward and inverse kinematics of the built-in arms (UR3/5/10/5e, KUKA LWR 4+): TCP = flange
+// unless a tool offset is given; every analytic IK solution with its configuration label.
+#include <pybind11/stl.h>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
+#include "vrreg/kinematics/inverse_kinematics.hpp"
+#include "vrreg/kinematics/robots.hpp"
+
+namespace vrreg::python {
+namespace {
+
+kinematics::SerialChain chain_named(const std::string& robot, const py::object& tool) {
+  std::optional<kinematics::SerialChain> chain = kinematics::robot_by_name(robot);
+  VRREG_THROW_UNLESS(chain, "unknown robot '" << robot << "' (ur3, ur5, ur10, ur5e, lwr4)");
+  if (tool.is_none()) return *chain;
+  const Eigen::VectorXd offset = vector_from(tool, "tool", 3);
+  return chain->with_tool(Eigen::Isometry3d(Eigen::Translation3d(offset)));
+}
+
+Eigen::Isometry3d pose_from(const py::object& pose) {
+  const py::array_t<double, py::array::forcecast> a =
+      py::array_t<double, py::array::forcecast>::ensure(pose);
+  if (!a || a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4) {
+    throw py::value_error("pose: expected a (4, 4) homogeneous matrix (translation in metres)");
+  }
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  for (py::ssize_t r = 0; r < 3; ++r) {
+    for (py::ssize_t c = 0; c < 4; ++c) t.matrix()(r, c) = a.at(r, c);
+  }
+  return t;
+}
+
+}  // namespace
+
+void bind_kinematics(py::module_& m) {
+  m.def(
+      "fk",
+      [](const std::string& robot, const py::object& q, const py::object& tool) {
+        const kinematics::SerialChain chain = chain_named(robot, tool);
+        const Eigen::VectorXd q_rad = vector_from(q, "q", chain.n_joints());
+        return matrix_copy(kinematics::forward_kinematics(chain, q_rad).matrix());
+      },
+      py::arg("robot"), py::arg("q"), py::kw_only(), py::arg("tool") = py::none(),
+      "T_base_tcp (4, 4) at joints q [rad] of a built-in robot ('ur3', 'ur5', 'ur10', 'ur5e', "
+      "'lwr4'); translation in METRES, base frame. tool: (3,) TCP offset in the flange frame [m].");
+
+  m.def(
+      "ik",
+      [](const std::string& robot, const py::object& pose, std::optional<double> psi,
+         const py::object& tool, bool joint_limits) {
+        const kinematics::SerialChain chain = chain_named(robot, tool);
+        const Eigen::Isometry3d t = pose_from(pose);
+        if (!psi && chain.family() == kinematics::ChainFamily::kLwr) psi = 0.0;
+        kinematics::IkOptions options;
+        options.apply_joint_limits = joint_limits;
+        const kinematics::IkResult r = kinematics::inverse_kinematics(chain, t, psi, options);
+        Eigen::MatrixXd q(chain.n_joints(), static_cast<Eigen::Index>(r.solutions.size()));
+        std::vector<std::string> labels;
+        std::vector<int> indices;
+        std::vector<std::string> singular;
+        for (std::size_t s = 0; s < r.solutions.size(); ++s) {
+          q.col(static_cast<Eigen::Index>(s)) = r.solutions[s].q_rad;
+          labels.push_back(r.solutions[s].config.to_string());
+          indices.push_back(r.solutions[s].config.index());
+          singular.push_back(kinematics::singularity_names(r.solutions[s].singular));
+        }
+        py::dict d;
+        d["status"] = kinematics::to_string(r.status);
+        d["message"] = r.message;
+        d["q"] = columns_as_rows(q);
+        d["configs"] = labels;
+        d["config_indices"] = indices;
+        d["singular"] = singular;
+        d["n_outside_limits"] = r.n_outside_limits;
+        return d;
+      },
+      py::arg("robot"), py::arg("pose"), py::kw_only(), py::arg("psi") = py::none(),
+      py::arg("tool") = py::none(), py::arg("joint_limits") = true,
+      "Every analytic IK solution of TCP pose `pose` ((4, 4), translation in METRES, base frame): "
+      "a dict with q (S, n_joints) [rad], configs (labels such as "
+      "'shoulder-left/elbow-up/wrist-noflip' or 'GC=+,-,+'), config_indices, singular, status "
+      "('ok', 'unreachable', 'outside-limits') and message. psi: LWR 4+ arm angle [rad] "
+      "(default 0); tool: (3,) TCP offset in the flange frame [m].");
+  m.def("robots", &kinematics::builtin_robot_names, "Names fk and ik accept.");
+}
+
+}  // namespace vrreg::python

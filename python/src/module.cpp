@@ -1,0 +1,20 @@
+// The compiled part of `import vrreg` (python/vrreg/__init__.py re-exports it).
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_vrreg, m) {
+  m.doc() =
+      "vrreg: vision-robot registration with NIST's RRBC correction. Positions are (N, 3) numpy "
+      "arrays in metres (sensor frame X, robot frame Y, Y ~ R X + tau, paper Eq. 2).";
+  using namespace vrreg::python;
+  bind_errors(m);
+  bind_model(m);
+  bind_io(m);
+  bind_results(m);
+  bind_pipeline(m);
+  bind_metrics(m);
+  bind_kinematics(m);
+  bind_planning(m);
+  bind_simulation(m);
+  bind_experiments(m);
+  bind_timing(m);
+}

@@ -1,0 +1,228 @@
+// The results of register / evaluate / correct as small classes: scalars in metres, per-point
+// arrays as read-only numpy views of the C++ result (no copy; the result stays alive with them).
+#include <pybind11/stl.h>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "vrreg/core/units.hpp"
+#include "vrreg/vrreg.hpp"
+
+namespace vrreg::python {
+namespace {
+
+// A property returning a view of one point set of the result.
+template <typename Result, typename Get>
+void points_property(py::class_<Result>& c, const char* name, Get get, const char* doc) {
+  c.def_property_readonly(
+      name, [get](py::object self) { return view_of(get(self.cast<const Result&>()), self); }, doc);
+}
+
+py::array status_codes(const TargetCorrection& c) {
+  py::array_t<std::uint8_t> out(static_cast<py::ssize_t>(c.stencils.size()));
+  for (std::size_t i = 0; i < c.stencils.size(); ++i) {
+    out.mutable_at(static_cast<py::ssize_t>(i)) = static_cast<std::uint8_t>(c.stencils[i].status);
+  }
+  return out;
+}
+
+std::vector<std::string> status_names(const TargetCorrection& c) {
+  std::vector<std::string> out;
+  out.reserve(c.stencils.size());
+  for (const Stencil& s : c.stencils) out.emplace_back(to_string(s.status));
+  return out;
+}
+
+py::object strategy2_dict(const std::optional<planning::Strategy2Summary>& s) {
+  if (!s) return py::none();
+  py::dict d;
+  d["n_points"] = s->n_points;
+  d["n_locations"] = s->n_locations;
+  d["n_switched_locations"] = s->n_switched;
+  d["n_switched_points"] = s->n_switched_points;
+  d["switched_points_fraction"] = s->switched_points_fraction();
+  d["switched_locations_fraction"] = s->switched_locations_fraction();
+  return d;
+}
+
+std::string mm_text(double metres) { return std::to_string(units::m_to_mm(metres)) + " mm"; }
+
+std::string register_repr(const RegisterResult& r) {
+  std::string text = "<vrreg.RegisterResult " + std::to_string(r.n_registered) +
+                     " fiducials, FRE " + mm_text(r.registration.fre_m) + ", sigma_L " +
+                     mm_text(r.rigid_body.sigma_l_m);
+  if (r.noise.sigma_noise_m) text += ", sigma_noise " + mm_text(*r.noise.sigma_noise_m);
+  if (r.noise.rho) text += ", rho " + std::to_string(*r.noise.rho);
+  if (!r.rejected.empty()) text += ", " + std::to_string(r.rejected.size()) + " rejected";
+  return text + ">";
+}
+
+std::string evaluate_repr(const EvaluateResult& r) {
+  return "<vrreg.EvaluateResult " + std::to_string(r.summary.n_targets) + " targets, " +
+         to_string(r.correction.method_used) + ": RMS_T " + mm_text(r.summary.unc_rms_t_m) +
+         " uncorrected, " + mm_text(r.summary.cor_rms_t_m) + " corrected, gamma " +
+         std::to_string(100.0 * r.summary.gamma) + " %, N_bad " + std::to_string(r.summary.n_bad) +
+         ">";
+}
+
+std::string correct_repr(const CorrectResult& r) {
+  return "<vrreg.CorrectResult " + std::to_string(r.names.size()) + " points, " +
+         to_string(r.correction.method_used) + ", " + std::to_string(r.correction.n_flagged) +
+         " not correctable>";
+}
+
+// What evaluate and correct share: the interpolation used and the corrected points.
+template <typename Result>
+void bind_correction_members(py::class_<Result>& c) {
+  c.def_property_readonly(
+       "method", [](const Result& r) { return std::string(to_string(r.correction.method_used)); },
+       "interpolation used: 'grid', 'scattered' or 'octuplet' (Eq. 7)")
+      .def_property_readonly(
+          "layout", [](const Result& r) { return r.correction.layout; },
+          "what the interpolation used, in words")
+      .def_property_readonly(
+          "cube_edge", [](const Result& r) { return r.interpolation.cube_edge_m; },
+          "octuplet cube edge [m] (0 when not set)")
+      .def_property_readonly(
+          "n_flagged", [](const Result& r) { return r.correction.n_flagged; },
+          "points left uncorrected (status != OK)")
+      .def_property_readonly("names", [](const Result& r) { return r.names; })
+      .def_property_readonly("configs", [](const Result& r) { return r.configs; })
+      .def_property_readonly(
+          "status", [](const Result& r) { return status_codes(r.correction); },
+          "(N,) uint8 StencilStatus per point (0 = OK)")
+      .def_property_readonly(
+          "status_names", [](const Result& r) { return status_names(r.correction); },
+          "status per point as text ('ok', 'outside grid', ...)");
+  points_property(
+      c, "corrected",
+      [](const Result& r) -> const Points3& { return r.correction.corrected_robot_m; },
+      "(N, 3) RRBC-corrected positions, robot frame [m]: what to command (Eq. 8)");
+  points_property(
+      c, "uncorrected",
+      [](const Result& r) -> const Points3& { return r.correction.uncorrected_robot_m; },
+      "(N, 3) R X + tau, robot frame [m]");
+  points_property(
+      c, "corrections",
+      [](const Result& r) -> const Points3& { return r.correction.corrections_sensor_m; },
+      "(N, 3) interpolated corrections epsilon(T_X) (Eq. 7), sensor frame [m]");
+}
+
+}  // namespace
+
+void bind_results(py::module_& m) {
+  py::enum_<StencilStatus>(m, "StencilStatus", "Why a point has no interpolated correction.")
+      .value("OK", StencilStatus::kOk)
+      .value("OUTSIDE_GRID", StencilStatus::kOutsideGrid)
+      .value("OUTSIDE_HULL", StencilStatus::kOutsideHull)
+      .value("MISSING_CORNER", StencilStatus::kMissingCorner);
+
+  py::class_<RegisterResult> reg(m, "RegisterResult", "What register found; lengths in metres.");
+  reg.def_property_readonly(
+         "model", [](const RegisterResult& r) -> const RegistrationModel& { return r.model; },
+         py::return_value_policy::reference_internal, "the vrreg.Model built")
+      .def_property_readonly(
+          "fre", [](const RegisterResult& r) { return r.registration.fre_m; },
+          "FRE: RMS fit residual (Eq. 2) [m] (not target accuracy: evaluate)")
+      .def_property_readonly(
+          "sigma_l", [](const RegisterResult& r) { return r.rigid_body.sigma_l_m; },
+          "sigma_L: std of L_ij over all fiducial pairs (Eq. 1) [m]")
+      .def_property_readonly(
+          "mean_l", [](const RegisterResult& r) { return r.rigid_body.mean_m; },
+          "mean of L_ij (Eq. 1) [m]")
+      .def_property_readonly("pairs", [](const RegisterResult& r) { return r.rigid_body.pairs; })
+      .def_property_readonly(
+          "sigma_opt", [](const RegisterResult& r) { return optional_value(r.noise.sigma_opt_m); },
+          "sensor noise per axis from repeat readings [m], or None")
+      .def_property_readonly(
+          "sigma_rep", [](const RegisterResult& r) { return optional_value(r.noise.sigma_rep_m); },
+          "robot repeatability as given [m], or None")
+      .def_property_readonly(
+          "sigma_noise",
+          [](const RegisterResult& r) { return optional_value(r.noise.sigma_noise_m); },
+          "sqrt(sigma_opt^2 + sigma_rep^2) (Eq. 9) [m], or None")
+      .def_property_readonly(
+          "rho", [](const RegisterResult& r) { return optional_value(r.noise.rho); },
+          "sigma_L / sigma_noise: RRBC helps when > 2.5; or None")
+      .def_property_readonly("rho_is_upper_bound",
+                             [](const RegisterResult& r) { return r.noise.rho_is_upper_bound(); })
+      .def_property_readonly(
+          "rejected", [](const RegisterResult& r) { return r.rejected; },
+          "robust: names of the rejected fiducials")
+      .def_property_readonly("n_registered", [](const RegisterResult& r) { return r.n_registered; })
+      .def_property_readonly(
+          "rotation",
+          [](const RegisterResult& r) { return matrix_copy(r.model.T_robot_sensor.rotation); },
+          "R (3, 3), sensor -> robot (Eq. 2)")
+      .def_property_readonly(
+          "translation",
+          [](const RegisterResult& r) { return vector_copy(r.model.T_robot_sensor.translation_m); },
+          "tau (3,), robot frame [m]")
+      .def_property_readonly("scale",
+                             [](const RegisterResult& r) { return r.model.T_robot_sensor.scale; })
+      .def_property_readonly(
+          "spread", [](const RegisterResult& r) { return vector_copy(r.registration.spread_m); },
+          "RMS spread along the principal axes [m]")
+      .def_property_readonly(
+          "residuals",
+          [](py::object self) {
+            return view_of(self.cast<const RegisterResult&>().registration.residuals_m, self);
+          },
+          "(N,) ||R X + tau - Y|| per registered fiducial [m]")
+      .def_property_readonly(
+          "relabelled", [](const RegisterResult& r) { return strategy2_dict(r.relabelled); },
+          "strategy 2: what was relabelled (dict), else None")
+      .def("__repr__", &register_repr);
+
+  py::class_<EvaluateResult> ev(m, "EvaluateResult",
+                                "A model's accuracy on targets; lengths in metres.");
+  bind_correction_members(ev);
+  ev.def_property_readonly("n_targets", [](const EvaluateResult& r) { return r.summary.n_targets; })
+      .def_property_readonly(
+          "unc_rms_t", [](const EvaluateResult& r) { return r.summary.unc_rms_t_m; },
+          "RMS_T uncorrected (Eq. 4) [m]")
+      .def_property_readonly(
+          "cor_rms_t", [](const EvaluateResult& r) { return r.summary.cor_rms_t_m; },
+          "RMS_T RRBC-corrected (Eq. 4, 8) [m]")
+      .def_property_readonly(
+          "gamma", [](const EvaluateResult& r) { return r.summary.gamma; },
+          "(unc - cor) / unc, a fraction (x100 for the paper's %)")
+      .def_property_readonly(
+          "n_bad", [](const EvaluateResult& r) { return r.summary.n_bad; },
+          "N_bad: targets whose TRE RRBC made worse")
+      .def_property_readonly("bad_targets", [](const EvaluateResult& r) { return r.bad_targets; })
+      .def_property_readonly(
+          "strategy", [](const EvaluateResult& r) { return planning::strategy_number(r.strategy); },
+          "Procedure 2 strategy used (0: none)")
+      .def_property_readonly("config",
+                             [](const EvaluateResult& r) { return optional_value(r.config); })
+      .def_property_readonly("relabelled",
+                             [](const EvaluateResult& r) { return strategy2_dict(r.relabelled); })
+      .def("__repr__", &evaluate_repr);
+  ev.def_property_readonly(
+        "unc_tre",
+        [](py::object self) { return view_of(self.cast<const EvaluateResult&>().unc_tre_m, self); },
+        "(N,) TRE(T_X) per target (Eq. 3) [m]")
+      .def_property_readonly(
+          "cor_tre",
+          [](py::object self) {
+            return view_of(self.cast<const EvaluateResult&>().cor_tre_m, self);
+          },
+          "(N,) TRE of the corrected targets [m] (flagged: uncorrected)")
+      .def_property_readonly(
+          "delta_tre",
+          [](py::object self) {
+            return view_of(self.cast<const EvaluateResult&>().summary.delta_tre_m, self);
+          },
+          "TRE(cor) - TRE(unc) where it improved (< 0), Fig. 11 [m]");
+  points_property(
+      ev, "targets_robot",
+      [](const EvaluateResult& r) -> const Points3& { return r.targets_robot_m; },
+      "(N, 3) nominal target positions, robot frame [m]");
+
+  py::class_<CorrectResult> cor(m, "CorrectResult",
+                                "Corrected points, in the order given; metres.");
+  bind_correction_members(cor);
+  cor.def("__repr__", &correct_repr);
+}
+
+}  // namespace vrreg::python
