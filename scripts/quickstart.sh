@@ -3,12 +3,17 @@
 # 1. register -> evaluate -> correct on the example cell that the repo ships
 #    (examples/data/example-cell.csv, made by build/release/examples/example_01_make_example_cell);
 # 2. vrreg reproduce: the paper's experiments on the simulated UR5 and KUKA test beds (one seed,
-#    about a second), Tables 1-2 and the Figure 7-8 data beside the paper's, figure data in
-#    out/reproduce/.
+#    about a second), Tables 1-2 and the Figure 7-8 data beside the paper's, figure data and the
+#    HTML report (report.html) in out/reproduce/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh release
+# Only what the main job needs: the command and the Python module (not the tests and benchmarks);
+# the module only where Python's development files are there (the configure step says so).
+cmake --preset release >/dev/null
+targets=(vrreg_cli)
+if cmake --build build/release --target help | grep -q '^_vrreg:'; then targets+=(_vrreg); fi
+scripts/build.sh release "${targets[@]}"
 vrreg=build/release/bin/vrreg
 data=examples/data/example-cell.csv
 mkdir -p out

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "vrreg/core/file_error.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
 
@@ -25,6 +26,19 @@ struct InterpolationFlags {
   /// Register's settings: the defaults with these on top.
   [[nodiscard]] InterpolationSettings settings() const;
 };
+
+/// Runs `run`; an InputError that names no file (degenerate geometry, what a model cannot do)
+/// becomes a FileError naming `path`, the file the command was given it from.
+template <typename F>
+void naming_file(const std::string& path, F&& run) {
+  try {
+    run();
+  } catch (const FileError&) {
+    throw;  // names its file (and line) already
+  } catch (const InputError& e) {
+    throw FileError(path, 0, e.what());
+  }
+}
 
 /// Prints JSON to stdout, two-space indented, with a final newline.
 void print_json(const nlohmann::json& j);

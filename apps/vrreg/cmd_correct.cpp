@@ -45,31 +45,28 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   }
   std::printf("corrected %zu points from %s with model %s\n", n_points, args.points.c_str(),
               args.model.c_str());
-  std::printf("  interpolation                 %s: %s\n", to_string(c.method_used), c.layout.c_str());
+  std::printf("  interpolation                 %s: %s\n", to_string(c.method_used),
+              c.layout.c_str());
   if (c.n_flagged > 0) {
-    std::printf("  not correctable               %d points (outside the fiducials; status column "
-                "says why; robot_* holds the uncorrected mapping)\n",
-                c.n_flagged);
+    std::printf(
+        "  not correctable               %d points (outside the fiducials; status column "
+        "says why; robot_* holds the uncorrected mapping)\n",
+        c.n_flagged);
   }
   std::printf("  robot-frame positions (mm) written to %s\n", args.output.c_str());
 }
 
 void run_correct(const CorrectArgs& args) {
   const RegistrationModel model = io::read_model_json(args.model);
-  try {
-    run_correct_unchecked(args, model);
-  } catch (const FileError&) {
-    throw;  // names the points file (or the model file) already
-  } catch (const InputError& e) {
-    throw FileError(args.model, 0, e.what());  // about the model and what it can do
-  }
+  naming_file(args.model, [&] { run_correct_unchecked(args, model); });
 }
 
 void add_correct_command(CLI::App& app) {
   auto args = std::make_shared<CorrectArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "correct", "RRBC-correct points measured by the sensor and map them to the robot frame "
-                 "(paper Eq. 7, 8)");
+      "correct",
+      "RRBC-correct points measured by the sensor and map them to the robot frame "
+      "(paper Eq. 7, 8)");
   cmd->add_option("--model", args->model, "model JSON written by 'vrreg register -o'")->required();
   cmd->add_option("--points", args->points,
                   "measurement CSV; its target rows are corrected (robot columns optional)")

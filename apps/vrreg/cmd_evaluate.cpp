@@ -99,13 +99,7 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
 
 void run_evaluate(const EvaluateArgs& args) {
   const RegistrationModel model = io::read_model_json(args.model);
-  try {
-    run_evaluate_unchecked(args, model);
-  } catch (const FileError&) {
-    throw;  // names the targets file (or the model file) already
-  } catch (const InputError& e) {
-    throw FileError(args.model, 0, e.what());  // about the model and what it can do
-  }
+  naming_file(args.model, [&] { run_evaluate_unchecked(args, model); });
 }
 
 void add_evaluate_command(CLI::App& app) {

@@ -30,15 +30,9 @@ struct RegisterArgs {
 
 void run_register_unchecked(const RegisterArgs& args);
 
+// Degenerate geometry and the like come from the library without a file name.
 void run_register(const RegisterArgs& args) {
-  try {
-    run_register_unchecked(args);
-  } catch (const FileError&) {
-    throw;  // already names file and line
-  } catch (const InputError& e) {
-    // Degenerate geometry and the like come from the library without a file name.
-    throw FileError(args.fiducials, 0, e.what());
-  }
+  naming_file(args.fiducials, [&] { run_register_unchecked(args); });
 }
 
 RegisterOptions register_options(const RegisterArgs& args) {

@@ -41,13 +41,9 @@ report::ReportPage cell_page(const ReportArgs& args) {
   options.interpolation = args.interpolation.choice();
   apply_evaluate_flags(args.strategy, options);
   EvaluateResult evaluation;
-  try {
+  naming_file(args.model, [&] {
     evaluation = evaluate(model, io::read_measurement_csv(args.targets), options);
-  } catch (const FileError&) {
-    throw;
-  } catch (const InputError& e) {
-    throw FileError(args.model, 0, e.what());
-  }
+  });
   std::optional<double> sigma_rep;
   if (args.sigma_rep_mm) sigma_rep = units::mm_to_m(*args.sigma_rep_mm);
   const report::CellReportInput input{model, evaluation, args.model, args.targets, sigma_rep};

@@ -6,9 +6,9 @@
 
 #include "command_registry.hpp"
 #include "vrreg/core/check.hpp"
-#include "vrreg/robot_io/error_model_file.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/plan_csv.hpp"
+#include "vrreg/robot_io/error_model_file.hpp"
 #include "vrreg/robot_io/simulation_csv.hpp"
 #include "vrreg/simulation/acquisition.hpp"
 #include "vrreg/simulation/plan_acquisition.hpp"

@@ -1,10 +1,9 @@
 #pragma once
 // Each command lives in its own cmd_<name>.cpp and registers itself here, so adding a command
 // touches no other file. `order` fixes the position in --help.
+#include <CLI/CLI.hpp>
 #include <functional>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 namespace vrreg::cli {
 

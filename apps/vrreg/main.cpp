@@ -1,12 +1,11 @@
 // vrreg: the command line. Parses, calls the library, writes through io. The only place that
 // catches exceptions and maps them to exit codes:
 //   0 success, 1 bad input or a failed computation (one line on stderr), 2 usage error.
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <exception>
 #include <iostream>
 #include <new>
-
-#include <CLI/CLI.hpp>
 
 #include "command_registry.hpp"
 #include "vrreg/core/check.hpp"

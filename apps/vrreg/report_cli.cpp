@@ -6,10 +6,10 @@
 #include <sstream>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/report/reproduce_report.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/plan_csv.hpp"
+#include "vrreg/report/reproduce_report.hpp"
 
 #ifndef VRREG_PLOTLY_JS_DEFAULT
 #define VRREG_PLOTLY_JS_DEFAULT "web/node_modules/plotly.js-dist-min/plotly.min.js"
@@ -38,7 +38,7 @@ std::string installed_plotly_js() {
   if (ec) return {};
   const std::filesystem::path path = exe.parent_path() / VRREG_PLOTLY_JS_FROM_BIN;
   return std::filesystem::is_regular_file(path, ec) ? path.lexically_normal().string()
-                                                     : std::string();
+                                                    : std::string();
 }
 
 }  // namespace
@@ -69,19 +69,17 @@ std::size_t write_report_html(const report::ReportPage& page, const std::string&
 }
 
 report::ReportPage write_reproduce_report(const nlohmann::json& reproduce,
-                                               const std::string& source,
-                                               const std::string& plan_csv,
-                                               const std::string& out) {
+                                          const std::string& source, const std::string& plan_csv,
+                                          const std::string& out) {
   std::optional<io::PlanFile> plan;
   if (!plan_csv.empty()) plan = io::read_plan_csv(plan_csv);
-  report::ReportPage page =
-      report::reproduce_report_page(reproduce, source, plan, plan_csv);
+  report::ReportPage page = report::reproduce_report_page(reproduce, source, plan, plan_csv);
   write_report_html(page, out);
   return page;
 }
 
 report::ReportPage write_reproduce_report(const std::string& dir, const std::string& plan_csv,
-                                               const std::string& out) {
+                                          const std::string& out) {
   const std::string path = (std::filesystem::path(dir) / "reproduce.json").string();
   std::string text;
   if (!std::filesystem::is_regular_file(path) || !read_whole(path, text)) {

@@ -28,11 +28,11 @@ std::size_t write_report_html(const report::ReportPage& page, const std::string&
 /// The report of `vrreg reproduce --out DIR`: reads DIR/reproduce.json (docs/report.md) and, when
 /// `plan_csv` is not empty, a plan for Fig. 16. Returns the page written to `out`.
 report::ReportPage write_reproduce_report(const std::string& dir, const std::string& plan_csv,
-                                               const std::string& out);
+                                          const std::string& out);
 
 /// The same from a reproduce.json already in memory (`source` names it on the page).
 report::ReportPage write_reproduce_report(const nlohmann::json& reproduce,
-                                               const std::string& source,
-                                               const std::string& plan_csv, const std::string& out);
+                                          const std::string& source, const std::string& plan_csv,
+                                          const std::string& out);
 
 }  // namespace vrreg::cli

@@ -54,7 +54,8 @@ planning::Procedure2 register_procedure2(const StrategyFlags& flags) {
 
 void apply_evaluate_flags(const StrategyFlags& flags, EvaluateOptions& options) {
   if (flags.strategy) options.strategy = planning::strategy_from_number(*flags.strategy);
-  if (!flags.joint_norm.empty()) options.joint_norm = kinematics::parse_joint_norm(flags.joint_norm);
+  if (!flags.joint_norm.empty())
+    options.joint_norm = kinematics::parse_joint_norm(flags.joint_norm);
 }
 
 void add_strategy_json(nlohmann::json& j, const RegistrationModel& model,

@@ -18,8 +18,10 @@ Points3 RigidTransform::apply_all(const ConstPoints3Ref& points_m) const {
 }
 
 RigidTransform RigidTransform::inverse() const {
-  const Eigen::Matrix3d r_inv = rotation.transpose();
-  return {r_inv, -(r_inv * translation_m)};
+  RigidTransform inv;
+  inv.rotation = rotation.transpose();
+  inv.translation_m = -(inv.rotation * translation_m);
+  return inv;
 }
 
 RigidTransform RigidTransform::operator*(const RigidTransform& other) const {

@@ -38,14 +38,8 @@ CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& 
     nominal = set->robot_points(rows);
   }
   out.correction =
-      strategy == Strategy::kVolumeCorners
-          ? pipeline_detail::correct_volume_corners(model, *set, rows, out.interpolation, norm)
-          : correct_targets(model.correction_field(), set->sensor_points(rows), nominal,
-                            out.interpolation, pipeline_detail::source_lines(*set, rows));
-  for (const std::size_t i : rows) {
-    out.names.push_back(set->locations[i].point);
-    out.configs.push_back(set->locations[i].config);
-  }
+      pipeline_detail::correct_rows(model, *set, rows, out.interpolation, strategy, norm, nominal);
+  pipeline_detail::labels_of(*set, rows, out.names, out.configs);
   return out;
 }
 

@@ -52,23 +52,17 @@ EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet
                      "--strategy 1 evaluates one configuration: give --config N");
   const std::vector<std::size_t> rows =
       pipeline_detail::select_rows(*set, Role::kTarget, out.config);
-  const Points3 targets_sensor = set->sensor_points(rows);
   out.targets_robot_m = set->robot_points(rows);
   out.interpolation = options.interpolation.apply(model.interpolation);
-  out.correction =
-      out.strategy == Strategy::kVolumeCorners
-          ? pipeline_detail::correct_volume_corners(model, *set, rows, out.interpolation, norm)
-          : correct_targets(model.correction_field(), targets_sensor, out.targets_robot_m,
-                            out.interpolation, pipeline_detail::source_lines(*set, rows));
+  out.correction = pipeline_detail::correct_rows(model, *set, rows, out.interpolation, out.strategy,
+                                                 norm, out.targets_robot_m);
   // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.
   out.unc_tre_m = point_errors(out.correction.uncorrected_robot_m, out.targets_robot_m);  // Eq. 3
   out.cor_tre_m = point_errors(out.correction.corrected_robot_m, out.targets_robot_m);
   out.summary = summarize_improvement(out.unc_tre_m, out.cor_tre_m);
-  for (const std::size_t i : rows) {
-    out.names.push_back(set->locations[i].point);
-    out.configs.push_back(set->locations[i].config);
-  }
-  for (const int n : out.summary.bad_targets) out.bad_targets.push_back(out.names[static_cast<std::size_t>(n)]);
+  pipeline_detail::labels_of(*set, rows, out.names, out.configs);
+  for (const int n : out.summary.bad_targets)
+    out.bad_targets.push_back(out.names[static_cast<std::size_t>(n)]);
   return out;
 }
 

@@ -26,9 +26,8 @@ CorrectionField RegistrationModel::correction_field() const {
 void RegistrationModel::validate() const {
   VRREG_THROW_UNLESS(!fiducials.empty(), "the model has no fiducials");
   VRREG_THROW_UNLESS(corrections_sensor_m.cols() == static_cast<Eigen::Index>(fiducials.size()),
-                     "the model has " << corrections_sensor_m.cols()
-                                      << " fiducial corrections for " << fiducials.size()
-                                      << " fiducials");
+                     "the model has " << corrections_sensor_m.cols() << " fiducial corrections for "
+                                      << fiducials.size() << " fiducials");
   VRREG_THROW_UNLESS(corrections_sensor_m.allFinite(),
                      "the model's fiducial corrections are not all finite");
   const SimilarityTransform& T = T_robot_sensor;

@@ -9,9 +9,8 @@ namespace vrreg {
 namespace {
 
 void check_count(Eigen::Index got, Eigen::Index n, const char* member) {
-  VRREG_THROW_UNLESS(got == 0 || got == n, "points: " << member << " has " << got
-                                                      << " entries for " << n
-                                                      << " points (give one each, or none)");
+  VRREG_THROW_UNLESS(got == 0 || got == n, "points: " << member << " has " << got << " entries for "
+                                                      << n << " points (give one each, or none)");
 }
 
 }  // namespace
@@ -20,9 +19,9 @@ void MeasuredPoints::validate(bool require_robot) const {
   const Eigen::Index n = size();
   VRREG_THROW_UNLESS(n > 0, "points: no points given (sensor_m has 0 columns)");
   VRREG_THROW_UNLESS(sensor_m.allFinite(), "points: sensor_m is not all finite");
-  VRREG_THROW_UNLESS(!require_robot || robot_m.cols() == n,
-                     "points: robot_m has " << robot_m.cols() << " columns for " << n
-                                            << " sensor positions");
+  VRREG_THROW_UNLESS(!require_robot || robot_m.cols() == n, "points: robot_m has "
+                                                                << robot_m.cols() << " columns for "
+                                                                << n << " sensor positions");
   check_count(robot_m.cols(), n, "robot_m");
   VRREG_THROW_UNLESS(robot_m.allFinite(), "points: robot_m is not all finite");
   check_count(weights.size(), n, "weights");

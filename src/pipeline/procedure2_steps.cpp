@@ -38,7 +38,8 @@ RegistrationModel volume_corner_model(const MeasurementSet& set, const planning:
                                       Points3& registered_sensor_m, Points3& registered_robot_m) {
   require_configurations(set, planning::Strategy::kVolumeCorners);
   RegistrationModel model;
-  for (const std::size_t i : set.select(Role::kFiducial)) model.fiducials.push_back(set.locations[i]);
+  for (const std::size_t i : set.select(Role::kFiducial))
+    model.fiducials.push_back(set.locations[i]);
   planning::Strategy3Options options;
   options.seed = p2.seed.value_or(1);
   options.match_tolerance_m = interpolation.match_tolerance_m;
@@ -90,6 +91,17 @@ TargetCorrection correct_volume_corners(const RegistrationModel& model, const Me
   } catch (const InputError& e) {
     fail(set, e.what());
   }
+}
+
+TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
+                              const std::vector<std::size_t>& rows,
+                              const InterpolationSettings& settings, planning::Strategy strategy,
+                              kinematics::JointNorm norm, const Points3& nominal_robot_m) {
+  if (strategy == planning::Strategy::kVolumeCorners) {
+    return correct_volume_corners(model, set, rows, settings, norm);
+  }
+  return correct_targets(model.correction_field(), set.sensor_points(rows), nominal_robot_m,
+                         settings, source_lines(set, rows));
 }
 
 }  // namespace vrreg::pipeline_detail

@@ -33,4 +33,13 @@ TargetCorrection correct_volume_corners(const RegistrationModel& model, const Me
                                         const InterpolationSettings& settings,
                                         kinematics::JointNorm norm);
 
+/// The `rows` of `set` corrected with the model (Eq. 7, 8) as `strategy` says: Strategy 3's
+/// nearest-configuration octuplets, else `settings` on the model's correction field with the rows'
+/// file lines as their visiting order. nominal_robot_m: the rows' nominal robot positions [m], or
+/// 0 columns where the interpolation does not need them.
+TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
+                              const std::vector<std::size_t>& rows,
+                              const InterpolationSettings& settings, planning::Strategy strategy,
+                              kinematics::JointNorm norm, const Points3& nominal_robot_m);
+
 }  // namespace vrreg::pipeline_detail

@@ -11,8 +11,8 @@
 namespace vrreg {
 namespace {
 
-using planning::Strategy;
 using pipeline_detail::fail;
+using planning::Strategy;
 
 // The registration weights of `rows`, or none when all are 1 (the paper's equal weights).
 Eigen::VectorXd weights_of(const MeasurementSet& set, const std::vector<std::size_t>& rows) {
@@ -20,7 +20,8 @@ Eigen::VectorXd weights_of(const MeasurementSet& set, const std::vector<std::siz
                                  [&](std::size_t i) { return set.locations[i].weight == 1.0; });
   if (equal) return {};
   Eigen::VectorXd w(static_cast<Eigen::Index>(rows.size()));
-  for (std::size_t k = 0; k < rows.size(); ++k) w(static_cast<Eigen::Index>(k)) = set.locations[rows[k]].weight;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    w(static_cast<Eigen::Index>(k)) = set.locations[rows[k]].weight;
   return w;
 }
 
@@ -103,9 +104,9 @@ void RegisterOptions::validate() const {
   registration.validate();
   interpolation.validate();
   if (robust) robust->validate();
-  VRREG_THROW_UNLESS(!sigma_rep_m || (std::isfinite(*sigma_rep_m) && *sigma_rep_m >= 0.0),
-                     "the robot repeatability must be finite and >= 0, got " << *sigma_rep_m
-                                                                              << " m");
+  VRREG_THROW_UNLESS(
+      !sigma_rep_m || (std::isfinite(*sigma_rep_m) && *sigma_rep_m >= 0.0),
+      "the robot repeatability must be finite and >= 0, got " << *sigma_rep_m << " m");
   const Strategy s = procedure2.strategy;
   const int n = planning::strategy_number(s);
   VRREG_THROW_UNLESS((s != Strategy::kAsListed && s != Strategy::kAlongPath) || config,
@@ -120,7 +121,8 @@ void RegisterOptions::validate() const {
                          interpolation.method == InterpolationMethod::kOctuplet,
                      "--strategy 3 corrects with octuplets (--cube-mm), not --interpolation "
                          << to_string(interpolation.method));
-  VRREG_THROW_UNLESS(s == Strategy::kVolumeCorners || !procedure2.seed, "--seed is for --strategy 3");
+  VRREG_THROW_UNLESS(s == Strategy::kVolumeCorners || !procedure2.seed,
+                     "--seed is for --strategy 3");
   VRREG_THROW_UNLESS(procedure2.registration_fiducials.empty(),
                      "registration_fiducials are chosen by Strategy 3, not given");
 }

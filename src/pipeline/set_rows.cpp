@@ -32,7 +32,16 @@ std::vector<std::size_t> source_lines(const MeasurementSet& set,
   return lines;
 }
 
-std::vector<Location> locations_of(const MeasurementSet& set, const std::vector<std::size_t>& rows) {
+void labels_of(const MeasurementSet& set, const std::vector<std::size_t>& rows,
+               std::vector<std::string>& names, std::vector<std::optional<int>>& configs) {
+  for (const std::size_t i : rows) {
+    names.push_back(set.locations[i].point);
+    configs.push_back(set.locations[i].config);
+  }
+}
+
+std::vector<Location> locations_of(const MeasurementSet& set,
+                                   const std::vector<std::size_t>& rows) {
   std::vector<Location> out;
   out.reserve(rows.size());
   for (std::size_t i : rows) out.push_back(set.locations[i]);

@@ -21,6 +21,10 @@ std::vector<std::size_t> select_rows(const MeasurementSet& set, Role role,
 std::vector<std::size_t> source_lines(const MeasurementSet& set,
                                       const std::vector<std::size_t>& rows);
 
+/// The point labels and configuration labels of the selected rows, appended to `names`, `configs`.
+void labels_of(const MeasurementSet& set, const std::vector<std::size_t>& rows,
+               std::vector<std::string>& names, std::vector<std::optional<int>>& configs);
+
 /// The selected locations, copied.
 std::vector<Location> locations_of(const MeasurementSet& set, const std::vector<std::size_t>& rows);
 
