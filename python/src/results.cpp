@@ -65,7 +65,7 @@ std::string evaluate_repr(const EvaluateResult& r) {
 }
 
 std::string correct_repr(const CorrectResult& r) {
-  return "<vrreg.CorrectResult " + std::to_string(r.names.size()) + " points, " +
+  return "<vrreg.CorrectResult " + std::to_string(r.correction.corrected_robot_m.cols()) + " points, " +
          to_string(r.correction.method_used) + ", " + std::to_string(r.correction.n_flagged) +
          " not correctable>";
 }

@@ -52,7 +52,32 @@ CorrectResult correct(const RegistrationModel& model, const MeasurementSet& poin
 
 CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& points,
                       const CorrectOptions& options) {
-  return correct_set(model, points.to_measurement_set(Role::kTarget, false), options);
+  const bool per_point = model.procedure2.strategy != Strategy::kAlongPath &&
+                         model.procedure2.strategy != Strategy::kVolumeCorners &&
+                         !options.config && !model.config;
+  if (!per_point) {  // labels and joints decide which points and which fiducials: the set's way
+    CorrectResult out = correct_set(model, points.to_measurement_set(Role::kTarget, false), options);
+    if (points.names.empty()) out.names.clear();
+    return out;
+  }
+  // Every point, straight from the caller's arrays: no per-point records (10^6 points stay 10^6
+  // columns), the same numbers as the set's way.
+  model.validate();
+  points.validate(false);
+  CorrectResult out;
+  out.interpolation = options.interpolation.apply(model.interpolation);
+  const bool octuplet = out.interpolation.method == InterpolationMethod::kOctuplet;
+  VRREG_THROW_UNLESS(!octuplet || points.robot_m.cols() == points.size(),
+                     "octuplet interpolation needs the nominal robot position of every point "
+                     "(robot_m)");
+  // Points given in memory were read at no file line: sequence 0, as the set's way has it.
+  const std::vector<std::size_t> sequence(octuplet ? static_cast<std::size_t>(points.size()) : 0, 0);
+  out.correction = correct_targets(model.correction_field(), points.sensor_m,
+                                   octuplet ? points.robot_m : Points3(3, 0), out.interpolation,
+                                   sequence);
+  out.names = points.names;
+  for (const int config : points.configs) out.configs.emplace_back(config);
+  return out;
 }
 
 }  // namespace vrreg

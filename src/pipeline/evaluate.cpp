@@ -75,7 +75,12 @@ EvaluateResult evaluate(const RegistrationModel& model, const MeasurementSet& ta
 
 EvaluateResult evaluate(const RegistrationModel& model, const MeasuredPoints& targets,
                         const EvaluateOptions& options) {
-  return evaluate_set(model, targets.to_measurement_set(Role::kTarget, true), options);
+  EvaluateResult out = evaluate_set(model, targets.to_measurement_set(Role::kTarget, true), options);
+  if (targets.names.empty()) {  // no labels given: none invented, bad targets by their number
+    out.names.clear();
+    for (std::string& bad : out.bad_targets) bad = "#" + bad;
+  }
+  return out;
 }
 
 }  // namespace vrreg

@@ -23,8 +23,8 @@ struct CorrectOptions {
 struct CorrectResult {
   InterpolationSettings interpolation;  ///< as used
   TargetCorrection correction;  ///< corrected_robot_m is what to command (uncorrected if flagged)
-  std::vector<std::string> names;
-  std::vector<std::optional<int>> configs;
+  std::vector<std::string> names;  ///< point labels; empty for arrays given without names
+  std::vector<std::optional<int>> configs;  ///< configuration labels; empty when none were given
 };
 
 /// Corrects the target rows of a measurement set (robot columns needed by octuplet and Strategy 3

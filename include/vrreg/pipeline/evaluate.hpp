@@ -35,13 +35,14 @@ struct EvaluateResult {
   std::optional<int> config;            ///< the configuration evaluated, if one
   InterpolationSettings interpolation;  ///< as used (the model's with the options applied)
   TargetCorrection correction;          ///< stencils, corrected and uncorrected robot positions
-  std::vector<std::string> names;       ///< target labels
+  std::vector<std::string> names;  ///< target labels; empty for arrays given without names
   std::vector<std::optional<int>> configs;  ///< their configuration labels (Strategy 2: new ones)
   Points3 targets_robot_m;              ///< nominal robot positions [m]
   Eigen::VectorXd unc_tre_m;  ///< TRE(T_X) per target (Eq. 3) [m]
   Eigen::VectorXd cor_tre_m;  ///< TRE(T^_X) per target; flagged targets keep the uncorrected one
   ImprovementSummary summary;  ///< RMS_T (Eq. 4) both ways, gamma, N_bad, Delta TRE
-  std::vector<std::string> bad_targets;  ///< names of the targets RRBC made worse
+  /// The targets RRBC made worse: their names, or "#k" (k-th target, from 1) without names.
+  std::vector<std::string> bad_targets;
   std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2: the targets' relabelling
 };
 
