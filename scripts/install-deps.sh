@@ -20,7 +20,7 @@ packages=(
   file dpkg-dev  # cpack -G DEB: dpkg-shlibdeps computes the .deb's Depends (scripts/package.sh)
   # The Python module (python/, docs/python.md) for Debian's /usr/bin/python3, its tests and
   # python/benchmarks/bench.py (scipy peers).
-  python3-dev python3-pybind11 python3-numpy python3-pytest python3-scipy libfmt-dev
+  python3-dev python3-pybind11 python3-numpy python3-pytest python3-scipy
 )
 # Node.js and npm: the machine's own when there (any Node >= 18), else Debian's.
 if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
