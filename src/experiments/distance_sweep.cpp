@@ -4,13 +4,11 @@
 #include <cmath>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/pipeline/model.hpp"
-#include "vrreg/correction/correct_targets.hpp"
-#include "vrreg/correction/rrbc.hpp"
 #include "vrreg/experiments/table1.hpp"
 #include "vrreg/metrics/errors.hpp"
 #include "vrreg/metrics/improvement.hpp"
-#include "vrreg/registration/rigid.hpp"
+#include "vrreg/pipeline/evaluate.hpp"
+#include "vrreg/pipeline/register_fiducials.hpp"
 
 namespace vrreg::experiments {
 namespace {
@@ -64,35 +62,27 @@ DistanceSweep run_distance_sweep(const MeasurementSet& set, const DistanceSweepO
   VRREG_THROW_UNLESS(fid.size() >= 3, "distance sweep: " << set.source << " has " << fid.size()
                                                          << " fiducials, needs at least 3");
   out.n_fiducials = static_cast<int>(fid.size());
-  const Points3 fid_sensor = set.sensor_points(fid);
-  const Points3 fid_robot = set.robot_points(fid);
-  RegistrationModel model;
-  model.source = set.source;
-  model.T_robot_sensor = register_rigid(fid_sensor, fid_robot).T_robot_sensor;
-  for (const std::size_t i : fid) model.fiducials.push_back(set.locations[i]);
-  model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, fid_sensor, fid_robot);
-
-  const CorrectionField field = model.correction_field();
+  // One registration of every fiducial (the front door, as `vrreg register` does), then octuplet
+  // corrections of every target with each cube edge (as `vrreg evaluate --cube-mm A` does).
+  RegisterOptions registration;
+  registration.rigid_body_statistics = false;
+  registration.interpolation.match_tolerance_m = options.match_tolerance_m;
+  const RegistrationModel model = register_fiducials(set, registration).model;
 
   const Points3 tgt_sensor = set.sensor_points(tgt);
   const Points3 tgt_robot = set.robot_points(tgt);
   out.target_robot_m = tgt_robot;
-  std::vector<std::size_t> sequence;
-  for (const std::size_t i : tgt) {
-    out.target_points.push_back(set.locations[i].point);
-    sequence.push_back(set.locations[i].source_line);
-  }
+  for (const std::size_t i : tgt) out.target_points.push_back(set.locations[i].point);
   out.unc_tre_m = point_errors(model.T_robot_sensor.apply_all(tgt_sensor), tgt_robot);
   out.unc_rms_t_m = root_mean_square(out.unc_tre_m);
 
   Eigen::VectorXd delta_at_d_min;
   double d_min = 0.0;
   for (const double a : options.cube_edges_m) {
-    InterpolationSettings settings;
-    settings.method = InterpolationMethod::kOctuplet;
-    settings.cube_edge_m = a;
-    settings.match_tolerance_m = options.match_tolerance_m;
-    const TargetCorrection c = correct_targets(field, tgt_sensor, tgt_robot, settings, sequence);
+    EvaluateOptions octuplet;
+    octuplet.interpolation.method = InterpolationMethod::kOctuplet;
+    octuplet.interpolation.cube_edge_m = a;
+    const TargetCorrection c = evaluate(model, set, octuplet).correction;
     SweepStep step;
     step.cube_edge_m = a;
     step.d_m = octuplet_distance_m(a);

@@ -4,12 +4,11 @@
 #include <set>
 
 #include "vrreg/core/check.hpp"
-#include "vrreg/pipeline/model.hpp"
 #include "vrreg/metrics/errors.hpp"
 #include "vrreg/metrics/improvement.hpp"
 #include "vrreg/metrics/noise.hpp"
-#include "vrreg/planning/strategy3_correction.hpp"
-#include "vrreg/planning/strategy3_registration.hpp"
+#include "vrreg/pipeline/evaluate.hpp"
+#include "vrreg/pipeline/register_fiducials.hpp"
 
 namespace vrreg::experiments {
 namespace {
@@ -51,18 +50,15 @@ Table2Entry strategy3(const MeasurementSet& set, int config, const RegistrationM
   e.strategy = 3;
   const std::vector<std::size_t> rows = set.select(Role::kTarget, config);
   describe_targets(set, rows, e);
-  std::vector<Location> targets;
-  for (const std::size_t i : rows) targets.push_back(set.locations[i]);
-  planning::Strategy3CorrectionOptions correction;
-  correction.cube_edge_m = o.cube_edge_m;
-  correction.match_tolerance_m = o.match_tolerance_m;
-  correction.norm = o.norm;
-  const TargetCorrection c = planning::correct_targets_strategy3(model.T_robot_sensor, model.fiducials,
-                                               model.corrections_sensor_m, targets, correction);
+  EvaluateOptions targets_of_config;
+  targets_of_config.config = config;
+  targets_of_config.joint_norm = o.norm;
+  const TargetCorrection c = evaluate(model, set, targets_of_config).correction;
+  const std::size_t n_targets = rows.size();
   const Points3& robot = e.target_robot_m;
   RrbcRunFigures& f = e.figures;
   f.n_fiducials = 8;
-  f.n_targets = static_cast<int>(targets.size());
+  f.n_targets = static_cast<int>(n_targets);
   f.sigma_opt_m = o.sigma_opt_m;
   f.sigma_noise_m = sigma_noise;
   f.unc_tre_m = point_errors(c.uncorrected_robot_m, robot);
@@ -120,17 +116,21 @@ Table2 run_table2(const MeasurementSet& set, const Table2Options& options) {
   const planning::Strategy2Result ordered = planning::relabel_strategy2(set, options.norm);
   out.strategy2 = ordered.summary;
 
-  // Strategy 3's one registration: the volume corners, each in a random configuration.
-  RegistrationModel model;
+  // Strategy 3's one registration: the volume corners, each in a random configuration (the front
+  // door, as `vrreg register --strategy 3 --seed N --cube-mm A` does).
+  RegisterOptions s3;
+  s3.rigid_body_statistics = false;
+  s3.procedure2.strategy = planning::Strategy::kVolumeCorners;
+  s3.procedure2.joint_norm = options.norm;
+  s3.procedure2.seed = options.strategy3_seed;
+  s3.interpolation.method = InterpolationMethod::kOctuplet;
+  s3.interpolation.cube_edge_m = options.cube_edge_m;
+  s3.interpolation.match_tolerance_m = options.match_tolerance_m;
+  const RegistrationModel model = register_fiducials(set, s3).model;
   const std::vector<std::size_t> fid = set.select(Role::kFiducial);
-  for (const std::size_t i : fid) model.fiducials.push_back(set.locations[i]);
-  planning::Strategy3Options s3;
-  s3.seed = options.strategy3_seed;
-  s3.match_tolerance_m = options.match_tolerance_m;
-  const planning::Strategy3Registration r = planning::register_volume_corners(model.fiducials, s3);
-  model.T_robot_sensor = r.registration.T_robot_sensor;
-  model.corrections_sensor_m = r.corrections_sensor_m;
-  for (const std::size_t c : r.corner_fiducials) out.strategy3_corners.push_back(fid[c]);
+  for (const std::size_t c : model.procedure2.registration_fiducials) {
+    out.strategy3_corners.push_back(fid[c]);
+  }
 
   const RrbcRunOptions run = per_label_options(options);
   for (const int m : out.configs) {
