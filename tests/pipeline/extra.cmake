@@ -1,0 +1,2 @@
+# The front door's array path is checked against its file path on the same cells (io reads them).
+target_link_libraries(${target} PRIVATE vrreg_io)
