@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/json_text.hpp"
 
 namespace vrreg::io::detail {
 
@@ -58,7 +59,7 @@ int JsonFields::integer(const json& object, const std::string& path, const std::
     return static_cast<int>(v);
   }
   fail(where, std::string("expected an integer, found ") +
-                  (value.is_number() ? value.dump() : value.type_name()));
+                  (value.is_number() ? quote_value(value) : value.type_name()));
 }
 
 std::optional<int> JsonFields::optional_integer(const json& object, const std::string& path,

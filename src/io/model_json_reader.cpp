@@ -11,6 +11,7 @@
 #include "json_fields.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/json_text.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
 
@@ -21,51 +22,24 @@ using nlohmann::json;
 constexpr double kMmPerM = units::kMillimetresPerMetre;
 constexpr double kRotationTolerance = 1e-9;
 
-// nlohmann's message without its "[json.exception...] parse error at line L, column C: " prefix.
-std::string parse_error_detail(const std::string& what) {
-  std::string detail = what;
-  const std::size_t bracket = detail.find("] ");
-  if (bracket != std::string::npos) detail.erase(0, bracket + 2);
-  const std::size_t colon = detail.find(": ");
-  if (detail.starts_with("parse error") && colon != std::string::npos) detail.erase(0, colon + 2);
-  return detail;
-}
-
-// 1-based line of the byte at 1-based offset `byte` of `text`.
-std::size_t line_of_byte(const std::string& text, std::size_t byte) {
-  const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
-  return 1 + static_cast<std::size_t>(
-                 std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
-}
-
 json parse_document(const std::string& text, const std::string& source) {
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
-    throw FileError(source, 0, "empty file (expected a vrreg model in JSON)");
-  }
-  try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw FileError(
-        source, line_of_byte(text, e.byte),
-        "invalid JSON (truncated or corrupted model file): " + parse_error_detail(e.what()));
-  } catch (const json::exception& e) {
-    throw FileError(source, 0, "invalid JSON: " + parse_error_detail(e.what()));
-  }
+  return parse_json_document(text, source, "model file");
 }
 
 void check_header(const json& doc, const detail::JsonFields& f, const std::string& source) {
   f.require_object(doc, "");
   const json& format = f.member(doc, "", "format");
   if (!format.is_string() || format.get<std::string>() != "vrreg-model") {
-    throw FileError(
-        source, 0,
-        "not a vrreg model file (\"format\" is " + format.dump() + ", expected \"vrreg-model\")");
+    throw FileError(source, 0,
+                    "not a vrreg model file (\"format\" is " + quote_value(format) +
+                        ", expected \"vrreg-model\")");
   }
   const json& version = f.member(doc, "", "version");
   if (!version.is_number_integer() ||
       version.get<std::int64_t>() != RegistrationModel::kFormatVersion) {
     throw FileError(source, 0,
-                    "unsupported model version " + version.dump() + "; this vrreg reads version " +
+                    "unsupported model version " + quote_value(version) +
+                        "; this vrreg reads version " +
                         std::to_string(RegistrationModel::kFormatVersion));
   }
   const json& units = f.member(doc, "", "units");

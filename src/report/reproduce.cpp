@@ -1,25 +1,24 @@
 // The reproduce report: reads reproduce.json (docs/report.md) and lays out the paper's tables and
 // figures, section by section, with the findings on top.
-#include "vrreg/report/reproduce_report.hpp"
-
 #include "reproduce_parts.hpp"
 #include "values.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/io/json_text.hpp"
+#include "vrreg/report/reproduce_report.hpp"
 
 namespace vrreg::report {
 
 nlohmann::json parse_reproduce_json(const std::string& text, const std::string& source) {
-  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
-  VRREG_THROW_UNLESS(!doc.is_discarded(), source << ": not valid JSON");
+  nlohmann::json doc = io::parse_json_document(text, source, "reproduce.json");
   VRREG_THROW_UNLESS(doc.is_object(), source << ": expected a JSON object at the top level");
   const auto format = doc.find("format");
-  VRREG_THROW_UNLESS(
-      format == doc.end() || *format == kReproduceFormat,
-      source << ": format is " << format->dump() << ", expected \"" << kReproduceFormat << "\"");
+  VRREG_THROW_UNLESS(format == doc.end() || *format == kReproduceFormat,
+                     source << ": format is " << io::quote_value(*format) << ", expected \""
+                            << kReproduceFormat << "\"");
   const auto version = doc.find("version");
   VRREG_THROW_UNLESS(version == doc.end() ||
                          (version->is_number_integer() && version->get<int>() <= kReproduceVersion),
-                     source << ": version " << version->dump()
+                     source << ": version " << io::quote_value(*version)
                             << " is newer than this vrreg reads (" << kReproduceVersion << ")");
   return doc;
 }

@@ -13,6 +13,7 @@
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/json_text.hpp"
 
 namespace vrreg::io {
 namespace {
@@ -51,7 +52,8 @@ class Reader {
     const std::string where = join(path, key);
     if (!parent.contains(key)) return nullptr;
     const json& value = parent.at(key);
-    if (!value.is_object()) fail(where, "expected an object with named keys, got " + value.dump());
+    if (!value.is_object())
+      fail(where, "expected an object with named keys, got " + quote_value(value));
     for (const auto& item : value.items()) {
       if (allowed.count(item.key()) == 0) {
         std::string names;
@@ -75,7 +77,7 @@ class Reader {
     const std::string where = join(path, key);
     if (!value.is_array() || (value.size() != n && !value.empty())) {
       fail(where, "expected a list of " + std::to_string(n) +
-                      " numbers (one per joint) or [], got " + value.dump());
+                      " numbers (one per joint) or [], got " + quote_value(value));
     }
     out.clear();
     for (std::size_t i = 0; i < value.size(); ++i) {
@@ -86,7 +88,8 @@ class Reader {
   void boolean(const json& parent, const std::string& path, const char* key, bool& out) const {
     if (!parent.contains(key)) return;
     const json& value = parent.at(key);
-    if (!value.is_boolean()) fail(join(path, key), "expected true or false, got " + value.dump());
+    if (!value.is_boolean())
+      fail(join(path, key), "expected true or false, got " + quote_value(value));
     out = value.get<bool>();
   }
 
@@ -95,7 +98,7 @@ class Reader {
     const json& value = parent.at(key);
     if (!value.is_number_integer() || value.get<std::int64_t>() < 1 ||
         value.get<std::int64_t>() > 1000000) {
-      fail(join(path, key), "expected an integer in [1, 1000000], got " + value.dump());
+      fail(join(path, key), "expected an integer in [1, 1000000], got " + quote_value(value));
     }
     out = value.get<int>();
   }
@@ -106,7 +109,7 @@ class Reader {
 
  private:
   double finite(const json& value, const std::string& path) const {
-    if (!value.is_number()) fail(path, "expected a number, got " + value.dump());
+    if (!value.is_number()) fail(path, "expected a number, got " + quote_value(value));
     const double x = value.get<double>();
     if (!std::isfinite(x)) fail(path, "not a finite number");
     return x;
@@ -201,8 +204,9 @@ simulation::TestbedErrorModel parse_error_model(const std::string& text, const s
                                                 const simulation::Testbed& testbed) {
   const std::size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string::npos) throw FileError(source, 0, "empty error-model file");
-  const detail::RobotDocument doc = text[first] == '{' ? detail::parse_robot_json(text, source)
-                                                       : detail::parse_robot_yaml(text, source);
+  const detail::RobotDocument doc = text[first] == '{' || text[first] == '['
+                                        ? detail::parse_robot_json(text, source)
+                                        : detail::parse_robot_yaml(text, source);
   const Reader reader(doc, source);
   const json& root = doc.root;
   if (!root.is_object()) reader.fail("", "expected an object with keys robot and tracker");
@@ -214,11 +218,11 @@ simulation::TestbedErrorModel parse_error_model(const std::string& text, const s
   }
   if (root.contains("format") && root.at("format") != kFormat) {
     reader.fail("format",
-                std::string("expected \"") + kFormat + "\", got " + root.at("format").dump());
+                std::string("expected \"") + kFormat + "\", got " + quote_value(root.at("format")));
   }
   if (root.contains("testbed") && root.at("testbed") != testbed.name) {
-    reader.fail("testbed",
-                "this file is for test bed " + root.at("testbed").dump() + ", not " + testbed.name);
+    reader.fail("testbed", "this file is for test bed " + quote_value(root.at("testbed")) +
+                               ", not " + testbed.name);
   }
   simulation::TestbedErrorModel model = testbed.default_errors;
   const auto n_joints = static_cast<std::size_t>(testbed.nominal.n_joints());

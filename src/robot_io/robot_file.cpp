@@ -11,6 +11,7 @@
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/json_text.hpp"
 #include "vrreg/kinematics/pose.hpp"
 #include "vrreg/kinematics/robots.hpp"
 
@@ -36,7 +37,8 @@ class Reader {
   }
 
   void require_object(const json& value, const std::string& path) const {
-    if (!value.is_object()) fail(path, "expected an object with named keys, got " + value.dump());
+    if (!value.is_object())
+      fail(path, "expected an object with named keys, got " + quote_value(value));
   }
 
   void allow_keys(const json& object, const std::string& path,
@@ -51,7 +53,7 @@ class Reader {
   }
 
   double number(const json& value, const std::string& path) const {
-    if (!value.is_number()) fail(path, "expected a number, got " + value.dump());
+    if (!value.is_number()) fail(path, "expected a number, got " + quote_value(value));
     const double x = value.get<double>();
     if (!std::isfinite(x)) fail(path, "not a finite number");
     return x;
@@ -74,7 +76,7 @@ class Reader {
 
   std::vector<double> numbers(const json& value, const std::string& path, std::size_t n) const {
     if (!value.is_array() || value.size() != n) {
-      fail(path, "expected a list of " + std::to_string(n) + " numbers, got " + value.dump());
+      fail(path, "expected a list of " + std::to_string(n) + " numbers, got " + quote_value(value));
     }
     std::vector<double> out;
     for (std::size_t i = 0; i < n; ++i) {
@@ -185,7 +187,7 @@ kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std:
       root, "",
       {"format", "name", "family", "dh", "joint_limits_rad", "joint_limits_deg", "tool", "base"});
   if (root.contains("format") && root.at("format") != "vrreg-robot") {
-    r.fail("format", "expected \"vrreg-robot\", got " + root.at("format").dump());
+    r.fail("format", "expected \"vrreg-robot\", got " + quote_value(root.at("format")));
   }
   std::string name = std::filesystem::path(source).stem().string();
   if (root.contains("name")) {
@@ -215,10 +217,11 @@ kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std:
     if (root.contains("family")) {
       const json& family = root.at("family");
       if (!family.is_string() || (family != "ur" && family != "lwr" && family != "generic")) {
-        r.fail("family", "expected \"ur\", \"lwr\" or \"generic\", got " + family.dump());
+        r.fail("family", "expected \"ur\", \"lwr\" or \"generic\", got " + quote_value(family));
       }
       if (family.get<std::string>() != kinematics::to_string(chain.family())) {
-        r.fail("family", "declared " + family.dump() + " but the DH table has the structure of " +
+        r.fail("family", "declared " + quote_value(family) +
+                             " but the DH table has the structure of " +
                              kinematics::to_string(chain.family()) +
                              " (see the analytic IK headers for the required twists and offsets)");
       }

@@ -6,15 +6,10 @@
 #include <cstdlib>
 
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/json_text.hpp"
 
 namespace vrreg::io::detail {
 namespace {
-
-std::size_t line_of_byte(const std::string& text, std::size_t byte) {
-  const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
-  return 1 + static_cast<std::size_t>(
-                 std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end), '\n'));
-}
 
 // A plain YAML scalar that reads as a number becomes one; quoted scalars stay strings.
 nlohmann::json scalar_value(const YAML::Node& node) {
@@ -28,9 +23,25 @@ nlohmann::json scalar_value(const YAML::Node& node) {
   return text;
 }
 
+// Bounds on what a YAML document may expand to: its aliases can make a few hundred bytes stand for
+// billions of values ("billion laughs"), and nesting drives the recursion below.
+struct Budget {
+  std::size_t values = 0;
+};
+
 nlohmann::json convert(const YAML::Node& node, const std::string& path, RobotDocument& doc,
-                       const std::string& source) {
-  doc.lines[path] = static_cast<std::size_t>(node.Mark().line + 1);
+                       const std::string& source, std::size_t depth, Budget& budget) {
+  const auto line = static_cast<std::size_t>(node.Mark().line + 1);
+  if (++budget.values > kMaxDocumentValues) {
+    throw FileError(source, line,
+                    "more than " + std::to_string(kMaxDocumentValues) +
+                        " values (YAML aliases expanding without bound?)");
+  }
+  if (depth > kMaxDocumentDepth) {
+    throw FileError(source, line,
+                    "nested deeper than " + std::to_string(kMaxDocumentDepth) + " levels");
+  }
+  doc.lines[path] = line;
   switch (node.Type()) {
     case YAML::NodeType::Null:
     case YAML::NodeType::Undefined:
@@ -41,7 +52,8 @@ nlohmann::json convert(const YAML::Node& node, const std::string& path, RobotDoc
       nlohmann::json array = nlohmann::json::array();
       std::size_t i = 0;
       for (const YAML::Node& item : node) {
-        array.push_back(convert(item, path + "[" + std::to_string(i++) + "]", doc, source));
+        array.push_back(
+            convert(item, path + "[" + std::to_string(i++) + "]", doc, source, depth + 1, budget));
       }
       return array;
     }
@@ -58,7 +70,7 @@ nlohmann::json convert(const YAML::Node& node, const std::string& path, RobotDoc
           throw FileError(source, static_cast<std::size_t>(item.first.Mark().line + 1),
                           child + ": duplicate key");
         }
-        object[key] = convert(item.second, child, doc, source);
+        object[key] = convert(item.second, child, doc, source, depth + 1, budget);
       }
       return object;
     }
@@ -80,14 +92,7 @@ std::size_t RobotDocument::line_of(std::string path) const {
 
 RobotDocument parse_robot_json(const std::string& text, const std::string& source) {
   RobotDocument doc;
-  try {
-    doc.root = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    std::string detail = e.what();
-    const std::size_t colon = detail.find(": ", detail.find("parse error"));
-    if (colon != std::string::npos) detail.erase(0, colon + 2);
-    throw FileError(source, line_of_byte(text, e.byte), "invalid JSON: " + detail);
-  }
+  doc.root = parse_json_document(text, source, "robot file");
   return doc;
 }
 
@@ -95,7 +100,8 @@ RobotDocument parse_robot_yaml(const std::string& text, const std::string& sourc
   RobotDocument doc;
   try {
     const YAML::Node node = YAML::Load(text);
-    doc.root = convert(node, "", doc, source);
+    Budget budget;
+    doc.root = convert(node, "", doc, source, 0, budget);
   } catch (const YAML::Exception& e) {
     throw FileError(source, e.mark.is_null() ? 0 : static_cast<std::size_t>(e.mark.line + 1),
                     "invalid YAML: " + e.msg);
