@@ -87,16 +87,18 @@ class TemporaryFile {
       : path_(path), target_(target) {
     const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     int error = 0;
-    {
-      const detail::SignalsHeld held;
-      for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
-        name_ = (dir / temporary_basename()).string();
-        // 0666 & ~umask, like any new file; O_EXCL: never reuse an existing file.
-        fd_ = ::open(name_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        error = errno;
-        if (fd_ < 0 && error != EEXIST) break;
-      }
-      if (fd_ >= 0) slot_ = detail::remember_temporary(name_);
+    for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
+      name_ = (dir / temporary_basename()).string();
+      // Listed before it exists, so that no moment leaves it unlisted; a random name taken by
+      // another file (EEXIST) is forgotten before the next try.
+      slot_ = detail::remember_temporary(name_);
+      // 0666 & ~umask, like any new file; O_EXCL: never reuse an existing file.
+      fd_ = ::open(name_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      error = errno;
+      if (fd_ >= 0) break;
+      detail::forget_temporary(slot_);
+      slot_ = -1;
+      if (error != EEXIST) break;
     }
     if (fd_ < 0) {
       throw FileError(
@@ -130,7 +132,7 @@ class TemporaryFile {
   }
 
   void commit() {
-    const detail::SignalsHeld held;
+    // A signal between the rename and forget_temporary() unlinks a name that is gone: harmless.
     if (::rename(name_.c_str(), target_.c_str()) != 0) fail("cannot rename the temporary file");
     committed_ = true;
     detail::forget_temporary(slot_);

@@ -1,6 +1,6 @@
 #include "temporary_files.hpp"
 
-#include <pthread.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -55,16 +55,6 @@ int remember_temporary(const std::string& path) {
 void forget_temporary(int slot) {
   if (slot >= 0 && slot < kSlots) g_slots[slot].state.store(kFree, std::memory_order_release);
 }
-
-SignalsHeld::SignalsHeld() {
-  sigset_t block;
-  sigemptyset(&block);
-  sigaddset(&block, SIGINT);
-  sigaddset(&block, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &block, &saved_);
-}
-
-SignalsHeld::~SignalsHeld() { pthread_sigmask(SIG_SETMASK, &saved_, nullptr); }
 
 }  // namespace detail
 
