@@ -34,6 +34,23 @@ InterpolationChoice InterpolationFlags::choice() const {
 
 InterpolationSettings InterpolationFlags::settings() const { return choice().apply({}); }
 
+CLI::Option* add_output_option(CLI::App& command, const std::string& names, std::string& path,
+                               const std::string& help) {
+  const CLI::Validator file_name(
+      [](std::string& value) { return value.empty() ? std::string("needs a file name") : ""; }, "");
+  return command.add_option(names, path, help)->check(file_name);
+}
+
+CLI::Validator non_negative_seed() {
+  return {[](std::string& value) {
+            const std::size_t first = value.find_first_not_of(" \t");
+            return first != std::string::npos && value[first] == '-'
+                       ? "seeds are whole numbers >= 0, got " + value
+                       : std::string();
+          },
+          ""};
+}
+
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
 
 }  // namespace vrreg::cli

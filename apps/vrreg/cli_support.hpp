@@ -9,6 +9,7 @@
 
 #include "vrreg/core/file_error.hpp"
 #include "vrreg/core/format.hpp"
+#include "vrreg/io/output_paths.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
 
 namespace vrreg::cli {
@@ -38,6 +39,21 @@ void naming_file(const std::string& path, F&& run) {
   } catch (const InputError& e) {
     throw FileError(path, 0, e.what());
   }
+}
+
+/// Adds an output-file option: when given, its name may not be empty (an empty one would quietly
+/// write nothing).
+CLI::Option* add_output_option(CLI::App& command, const std::string& names, std::string& path,
+                               const std::string& help);
+
+/// Refuses a negative seed: CLI11 would read "-1" into an unsigned seed as 2^64 - 1.
+CLI::Validator non_negative_seed();
+
+/// Adds a seed option (an unsigned integer or an optional one) that refuses negative values.
+template <typename T>
+CLI::Option* add_seed_option(CLI::App& command, const std::string& names, T& seed,
+                             const std::string& help) {
+  return command.add_option(names, seed, help)->check(non_negative_seed());
 }
 
 /// Prints JSON to stdout, two-space indented, with a final newline.

@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/experiments/testbed_calibration.hpp"
@@ -50,6 +51,9 @@ std::vector<std::uint64_t> parse_seeds(const std::string& text) {
 }
 
 void run_calibrate(const CalibrateArgs& args) {
+  io::check_outputs_are_not_inputs(
+      {{"--ur5-errors", args.ur5_errors}, {"--lwr4-errors", args.lwr4_errors}},
+      {{"-o", args.output}});
   experiments::CalibrationOptions options;
   options.seeds = parse_seeds(args.seeds);
   options.ur5 = args.only.empty() || args.only == "ur5";
@@ -85,7 +89,7 @@ void add_calibrate_command(CLI::App& app) {
   cmd->add_option("--lwr4-errors", args->lwr4_errors, "error-model file for the LWR test bed");
   cmd->add_option("--only", args->only, "run one test bed only")
       ->check(CLI::IsMember({"ur5", "lwr4"}));
-  cmd->add_option("-o,--output", args->output, "also write the Markdown tables here");
+  add_output_option(*cmd, "-o,--output", args->output, "also write the Markdown tables here");
   cmd->add_flag("--check", args->check, "exit with status 1 when a band is not met");
   cmd->callback([args] { run_calibrate(*args); });
 }

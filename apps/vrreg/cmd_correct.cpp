@@ -57,6 +57,8 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
 }
 
 void run_correct(const CorrectArgs& args) {
+  io::check_outputs_are_not_inputs({{"--model", args.model}, {"--points", args.points}},
+                                   {{"-o", args.output}});
   const RegistrationModel model = io::read_model_json(args.model);
   naming_file(args.model, [&] { run_correct_unchecked(args, model); });
 }
@@ -73,7 +75,7 @@ void add_correct_command(CLI::App& app) {
       ->required();
   cmd->add_option("--config", args->config, "use only rows with this configuration label");
   args->interpolation.add_to(*cmd);
-  cmd->add_option("-o,--output", args->output, "write corrected positions (CSV, mm) here")
+  add_output_option(*cmd, "-o,--output", args->output, "write corrected positions (CSV, mm) here")
       ->required();
   cmd->add_flag("--json", args->json, "print a JSON summary instead of the table");
   cmd->callback([args] { run_correct(*args); });

@@ -98,6 +98,8 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
 }
 
 void run_evaluate(const EvaluateArgs& args) {
+  io::check_outputs_are_not_inputs({{"--model", args.model}, {"--targets", args.targets}},
+                                   {{"--per-target", args.per_target}});
   const RegistrationModel model = io::read_model_json(args.model);
   naming_file(args.model, [&] { run_evaluate_unchecked(args, model); });
 }
@@ -115,7 +117,8 @@ void add_evaluate_command(CLI::App& app) {
                   "use only target rows with this configuration label (default: the model's)");
   args->interpolation.add_to(*cmd);
   args->strategy.add_to(*cmd, false);
-  cmd->add_option("--per-target", args->per_target, "write per-target errors (CSV, mm) here");
+  add_output_option(*cmd, "--per-target", args->per_target,
+                    "write per-target errors (CSV, mm) here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_evaluate(*args); });
 }

@@ -17,6 +17,7 @@
 #include "vrreg/io/parts_csv.hpp"
 #include "vrreg/io/plan_csv.hpp"
 #include "vrreg/kinematics/pose.hpp"
+#include "vrreg/kinematics/robots.hpp"
 #include "vrreg/simulation/testbed.hpp"
 
 namespace vrreg::cli {
@@ -135,6 +136,10 @@ void run_plan_unchecked(const PlanArgs& args) {
 }
 
 void run_plan(const PlanArgs& args) {
+  // --robot names a built-in robot or a robot file; only a file is an input.
+  const std::string robot_file = kinematics::robot_by_name(args.robot) ? "" : args.robot;
+  io::check_outputs_are_not_inputs({{"--parts", args.parts}, {"--robot", robot_file}},
+                                   {{"-o", args.output}});
   try {
     run_plan_unchecked(args);
   } catch (const io::FileError&) {
@@ -185,7 +190,7 @@ void add_plan_command(CLI::App& app) {
       ->expected(1, kinematics::kMaxJoints);
   cmd->add_option("--norm", args->norm, "joint-space distance for 'nearest': l2 (paper) or linf")
       ->check(CLI::IsMember({"l2", "linf"}));
-  cmd->add_option("-o,--output", args->output, "write the plan CSV here");
+  add_output_option(*cmd, "-o,--output", args->output, "write the plan CSV here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the summary");
   cmd->callback([args] { run_plan(*args); });
 }

@@ -32,6 +32,7 @@ void run_register_unchecked(const RegisterArgs& args);
 
 // Degenerate geometry and the like come from the library without a file name.
 void run_register(const RegisterArgs& args) {
+  io::check_outputs_are_not_inputs({{"--fiducials", args.fiducials}}, {{"-o", args.output}});
   naming_file(args.fiducials, [&] { run_register_unchecked(args); });
 }
 
@@ -145,7 +146,7 @@ void add_register_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   args->interpolation.add_to(*cmd);
   args->strategy.add_to(*cmd, true);
-  cmd->add_option("-o,--output", args->output, "write the model (JSON) here");
+  add_output_option(*cmd, "-o,--output", args->output, "write the model (JSON) here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_register(*args); });
 }

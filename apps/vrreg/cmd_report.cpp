@@ -2,6 +2,7 @@
 // kinds of figures, either for a user's own cell (--model, --targets: evaluated as `evaluate`
 // does, with a verdict in words) or for the paper's experiments (--reproduce DIR).
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "cli_support.hpp"
@@ -52,6 +53,14 @@ report::ReportPage cell_page(const ReportArgs& args) {
 }
 
 void run_report(const ReportArgs& args) {
+  const std::string reproduce_json =
+      args.reproduce.empty() ? ""
+                             : (std::filesystem::path(args.reproduce) / "reproduce.json").string();
+  io::check_outputs_are_not_inputs({{"--model", args.model},
+                                    {"--targets", args.targets},
+                                    {"--plan", args.plan},
+                                    {"--reproduce", reproduce_json}},
+                                   {{"-o", args.output}});
   const bool cell = !args.model.empty() || !args.targets.empty();
   VRREG_THROW_UNLESS(cell != !args.reproduce.empty(),
                      "give either --model and --targets (your cell) or --reproduce DIR "
@@ -103,7 +112,7 @@ void add_report_command(CLI::App& app) {
   cmd->add_option("--plan", args->plan,
                   "plan CSV from 'vrreg plan': adds its fiducial layout "
                   "(paper Fig. 16)");
-  cmd->add_option("-o,--output", args->output, "the HTML file to write")->required();
+  add_output_option(*cmd, "-o,--output", args->output, "the HTML file to write")->required();
   cmd->add_flag("--json", args->json, "print one JSON object (output, charts, verdict)");
   cmd->callback([args] { run_report(*args); });
 }

@@ -148,7 +148,7 @@ void add_reproduce_command(CLI::App& app) {
       "reproduce",
       "reproduce the paper on the simulated test beds: Tables 1-2 and the Figure 7-8 data beside "
       "the paper's, the paper's findings checked, every figure's data as CSV");
-  cmd->add_option("--seed", args->seed,
+  add_seed_option(*cmd, "--seed", args->seed,
                   "first seed: draws the robots, the noise and Strategy 3's "
                   "corner configurations")
       ->capture_default_str();

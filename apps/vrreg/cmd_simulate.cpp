@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/io/file_error.hpp"
@@ -56,6 +57,8 @@ simulation::SimulatedDataset simulate_plan_file(const simulation::Testbed& testb
 }
 
 void run_simulate(const SimulateArgs& args) {
+  io::check_outputs_are_not_inputs({{"--plan", args.plan}, {"--errors", args.errors}},
+                                   {{"-o", args.output}, {"--write-errors", args.write_errors}});
   const simulation::Testbed testbed = simulation::testbed_by_name(args.testbed);
   simulation::SimulationOptions options;
   options.seed = args.seed;
@@ -110,15 +113,15 @@ void add_simulate_command(CLI::App& app) {
                   "measure this plan of 'vrreg plan --robot TESTBED' instead of a dataset: the "
                   "robot takes its joints, the tracker reads each location K times; then "
                   "'vrreg register' and 'vrreg evaluate --cube-mm SPACING' predict its accuracy");
-  cmd->add_option("--seed", args->seed,
+  add_seed_option(*cmd, "--seed", args->seed,
                   "draws the robot's errors and the noise; the same seed gives the same file")
       ->capture_default_str();
   cmd->add_option("--errors", args->errors,
                   "error-model file (JSON or YAML) over the test bed's defaults; see "
                   "--write-errors");
-  cmd->add_option("-o,--output", args->output, "measurement CSV to write");
-  cmd->add_option("--write-errors", args->write_errors,
-                  "write the error model in use (defaults, or --errors) to this JSON file");
+  add_output_option(*cmd, "-o,--output", args->output, "measurement CSV to write");
+  add_output_option(*cmd, "--write-errors", args->write_errors,
+                    "write the error model in use (defaults, or --errors) to this JSON file");
   cmd->callback([args] { run_simulate(*args); });
 }
 

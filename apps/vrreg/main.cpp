@@ -9,6 +9,7 @@
 
 #include "command_registry.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/io/atomic_write.hpp"
 
 namespace vrreg::cli {
 
@@ -20,6 +21,8 @@ std::vector<CommandEntry>& command_registry() {
 }  // namespace vrreg::cli
 
 int main(int argc, char** argv) {
+  // Ctrl-C or kill while an output is written leaves no temporary file behind.
+  vrreg::io::remove_temporary_files_on_signal();
   CLI::App app{
       "vrreg: point-based vision-robot registration with Restoration of the Rigid Body "
       "Condition (RRBC).\nLengths are printed in mm. Run 'vrreg COMMAND --help' for a command.",

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cli_support.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
 
@@ -36,8 +37,8 @@ void StrategyFlags::add_to(CLI::App& command, bool for_register) {
                                : "strategy 3: joint-space distance (default: the model's)")
       ->check(CLI::IsMember({"l2", "linf"}));
   if (for_register) {
-    command.add_option("--seed", seed,
-                       "strategy 3: seed of the random corner configurations (default 1)");
+    add_seed_option(command, "--seed", seed,
+                    "strategy 3: seed of the random corner configurations (default 1)");
   }
   command.footer(kStrategyHelp);
 }

@@ -1,6 +1,3 @@
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <optional>
 
@@ -10,6 +7,7 @@
 #include "measurement_header.hpp"
 #include "measurement_row.hpp"
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/input_file.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 
 namespace vrreg::io {
@@ -69,10 +67,7 @@ MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source
 }
 
 MeasurementSet read_measurement_csv(const std::string& path, const CsvReadOptions& options) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw FileError(path, 0, "is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::ifstream in = open_input_file(path);
   return parse_measurement_csv(in, path, options);
 }
 

@@ -1,16 +1,13 @@
 #include <Eigen/LU>
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "json_fields.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/input_file.hpp"
 #include "vrreg/io/json_text.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
@@ -178,14 +175,7 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
 }
 
 RegistrationModel read_model_json(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw FileError(path, 0, "is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw FileError(path, 0, "read error");
-  return parse_model_json(content.str(), path);
+  return parse_model_json(read_input_file(path), path);
 }
 
 }  // namespace vrreg::io

@@ -91,9 +91,11 @@ std::string format_model_json(const RegistrationModel& model) {
   out["scale"] = finite(T.scale, "scale");
   out["fre_mm"] = finite(units::m_to_mm(model.fre_m), "fre_mm");
   out["sigma_l_mm"] = finite(units::m_to_mm(model.sigma_l_m), "sigma_l_mm");
-  if (model.sigma_rep_m) out["sigma_rep_mm"] = finite(units::m_to_mm(*model.sigma_rep_m), "sigma_rep_mm");
+  if (model.sigma_rep_m)
+    out["sigma_rep_mm"] = finite(units::m_to_mm(*model.sigma_rep_m), "sigma_rep_mm");
   out["config"] = optional_int(model.config);
-  if (model.procedure2.strategy != planning::Strategy::kNone) out["procedure2"] = procedure2_json(model);
+  if (model.procedure2.strategy != planning::Strategy::kNone)
+    out["procedure2"] = procedure2_json(model);
   out["source"] = model.source;
   out["interpolation"] = {
       {"method", to_string(model.interpolation.method)},

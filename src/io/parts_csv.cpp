@@ -1,8 +1,5 @@
 #include "vrreg/io/parts_csv.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <unordered_map>
@@ -12,6 +9,7 @@
 #include "point_columns.hpp"
 #include "text_checks.hpp"
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/input_file.hpp"
 
 namespace vrreg::io {
 namespace {
@@ -94,10 +92,7 @@ std::vector<PartRecord> parse_parts_csv(std::istream& in, const std::string& sou
 }
 
 std::vector<PartRecord> read_parts_csv(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw FileError(path, 0, "is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::ifstream in = open_input_file(path);
   return parse_parts_csv(in, path);
 }
 

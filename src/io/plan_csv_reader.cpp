@@ -1,6 +1,3 @@
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -11,6 +8,7 @@
 #include "text_checks.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/input_file.hpp"
 #include "vrreg/io/plan_csv.hpp"
 
 namespace vrreg::io {
@@ -119,10 +117,7 @@ PlanFile parse_plan_csv(std::istream& in, const std::string& source_name) {
 }
 
 PlanFile read_plan_csv(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw FileError(path, 0, "is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::ifstream in = open_input_file(path);
   return parse_plan_csv(in, path);
 }
 

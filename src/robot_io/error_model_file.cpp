@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/input_file.hpp"
 #include "vrreg/io/json_text.hpp"
 
 namespace vrreg::io {
@@ -238,11 +238,7 @@ simulation::TestbedErrorModel parse_error_model(const std::string& text, const s
 
 simulation::TestbedErrorModel read_error_model_file(const std::string& path,
                                                     const simulation::Testbed& testbed) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, "cannot open error-model file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return parse_error_model(buffer.str(), path, testbed);
+  return parse_error_model(read_input_file(path), path, testbed);
 }
 
 }  // namespace vrreg::io

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -11,6 +10,7 @@
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
+#include "vrreg/io/input_file.hpp"
 #include "vrreg/io/json_text.hpp"
 #include "vrreg/kinematics/pose.hpp"
 #include "vrreg/kinematics/robots.hpp"
@@ -258,16 +258,13 @@ kinematics::SerialChain parse_robot_file(const std::string& text, const std::str
 }
 
 kinematics::SerialChain read_robot_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, "cannot open robot file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  const std::string text = read_input_file(path);
   std::string lower = path;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   RobotFileSyntax syntax = RobotFileSyntax::kAuto;
   if (ends_with(lower, ".json")) syntax = RobotFileSyntax::kJson;
   if (ends_with(lower, ".yaml") || ends_with(lower, ".yml")) syntax = RobotFileSyntax::kYaml;
-  return parse_robot_file(buffer.str(), path, syntax);
+  return parse_robot_file(text, path, syntax);
 }
 
 kinematics::SerialChain load_robot(const std::string& name_or_path) {

@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "robot_files.hpp"
+
 namespace {
 
 struct CliRun {
@@ -161,13 +163,7 @@ TEST(KinematicsCli, RobotFileAndItsErrors) {
       std::filesystem::temp_directory_path() / ("vrreg_kin_cli_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string good = (dir / "arm.yaml").string();
-  std::ofstream(good) << "name: my-ur5\ndh:\n"
-                         "  - {a_m: 0, alpha_deg: 90, d_m: 0.089159}\n"
-                         "  - {a_m: -0.425, alpha_deg: 0, d_m: 0}\n"
-                         "  - {a_m: -0.39225, alpha_deg: 0, d_m: 0}\n"
-                         "  - {a_m: 0, alpha_deg: 90, d_m: 0.10915}\n"
-                         "  - {a_m: 0, alpha_deg: -90, d_m: 0.09465}\n"
-                         "  - {a_m: 0, alpha_deg: 0, d_m: 0.0823}\n";
+  std::ofstream(good) << vrreg::testing::kUr5RobotYaml;
   const nlohmann::json from_file = run_json("fk " + good + " 0.1 -1.2 1.3 -0.4 1.5 0.2");
   const nlohmann::json builtin = run_json("fk ur5 0.1 -1.2 1.3 -0.4 1.5 0.2");
   EXPECT_EQ(from_file["robot"], "my-ur5");

@@ -1,11 +1,20 @@
 #pragma once
-// Output files are written whole or not at all (design.md 6).
+// Output files are written whole or not at all (design.md 6), and never replace anything but a
+// regular file: docs/file-formats.md, "How outputs are written".
 #include <string>
 
 namespace vrreg::io {
 
-/// Writes `content` to a temporary file beside `path`, flushes it to disk and renames it over
-/// `path`; on any failure removes the temporary file and throws FileError naming `path`.
+/// Writes `content` to a temporary file `.vrreg-XXXXXX` beside `path`, flushes it to disk and
+/// renames it over `path`; on any failure removes the temporary file and throws FileError naming
+/// `path`. A symbolic link at `path` is written through (its target is replaced, the link stays);
+/// a replaced file keeps its permission bits (and owner where allowed); a device, FIFO, socket,
+/// directory or read-only file at `path` is refused, not replaced.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+/// For programs: on SIGINT and SIGTERM, removes the temporary files being written, then ends the
+/// process by the signal as before. The library never installs signal handlers by itself; a
+/// signal its caller ignores stays ignored.
+void remove_temporary_files_on_signal();
 
 }  // namespace vrreg::io

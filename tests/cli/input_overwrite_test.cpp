@@ -1,0 +1,159 @@
+// No command writes over its own input, however the output is spelled: the same path, through
+// `sub/..`, a symbolic link or a hard link to the input. Each refusal exits 1 with one line naming
+// both files, and the input is byte for byte what it was.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "robot_files.hpp"
+
+namespace vrreg::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kParts =
+    "point,robot_x_mm,robot_y_mm,robot_z_mm\n"
+    "hole_A,420,-140,250\nhole_B,480,-140,250\npin_C,480,-60,260\npin_D,420,-60,240\n";
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+
+// Real inputs for every command, made once by the commands themselves.
+class InputOverwrite : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new fs::path(fresh_dir("input-overwrite"));
+    const fs::path& d = *dir_;
+    write_text(d / "parts.csv", kParts);
+    write_text(d / "robot.yaml", kUr5RobotYaml);
+    fs::create_directories(d / "rep");
+    for (const std::string& args :
+         {"simulate ur5 A1 -o " + q(d / "meas.csv") + " --write-errors " + q(d / "errors.json"),
+          "register --fiducials " + q(d / "meas.csv") + " -o " + q(d / "model.json"),
+          "plan --parts " + q(d / "parts.csv") +
+              " --halfwidth-mm 10 --spacing-mm 5 --robot ur5 -o " + q(d / "plan.csv"),
+          "reproduce --seeds 1 --only lwr4 --no-report --quiet --out " + q(d / "rep")}) {
+      const CliResult r = run_vrreg(args);
+      ASSERT_EQ(r.status, 0) << args << "\n" << r.err;
+    }
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete dir_;
+  }
+  static fs::path in(const std::string& name) { return *dir_ / name; }
+
+  // `args` with {IN} (a fresh copy of `input` in its own directory) and {OUT} (every spelling of
+  // that copy): refused each time, the input unchanged.
+  void expect_refused(const std::string& args, const fs::path& input, const std::string& option) {
+    const fs::path work =
+        fresh_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(work / "sub");
+    const fs::path copy = work / input.filename();
+    fs::copy_file(input, copy);
+    const std::string bytes = read_text(copy);
+    fs::create_symlink(copy, work / "link");
+    fs::create_hard_link(copy, work / "hard");
+    const std::vector<fs::path> spellings = {copy, work / "sub" / ".." / input.filename(),
+                                             work / "link", work / "hard"};
+    for (const fs::path& out : spellings) {
+      std::string line = args;
+      line.replace(line.find("{IN}"), 4, q(copy));
+      line.replace(line.find("{OUT}"), 5, q(out));
+      const CliResult r = run_vrreg(line);
+      EXPECT_EQ(r.status, 1) << line << "\n" << r.out << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_NE(r.err.find(out.string() + ": "), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(option + " '" + copy.string() + "'"), std::string::npos) << r.err;
+      EXPECT_EQ(read_text(copy), bytes) << line;
+      EXPECT_TRUE(fs::is_symlink(work / "link"));
+      EXPECT_TRUE(fs::is_regular_file(work / "hard"));
+    }
+    fs::remove_all(work);
+  }
+
+  static fs::path* dir_;
+};
+
+fs::path* InputOverwrite::dir_ = nullptr;
+
+TEST_F(InputOverwrite, Register) {
+  expect_refused("register --fiducials {IN} -o {OUT}", in("meas.csv"), "--fiducials");
+}
+
+TEST_F(InputOverwrite, Evaluate) {
+  expect_refused("evaluate --model " + q(in("model.json")) + " --targets {IN} --per-target {OUT}",
+                 in("meas.csv"), "--targets");
+  expect_refused("evaluate --model {IN} --targets " + q(in("meas.csv")) + " --per-target {OUT}",
+                 in("model.json"), "--model");
+}
+
+TEST_F(InputOverwrite, Correct) {
+  expect_refused("correct --model " + q(in("model.json")) + " --points {IN} -o {OUT}",
+                 in("meas.csv"), "--points");
+  expect_refused("correct --model {IN} --points " + q(in("meas.csv")) + " -o {OUT}",
+                 in("model.json"), "--model");
+}
+
+TEST_F(InputOverwrite, Simulate) {
+  expect_refused("simulate ur5 --plan {IN} -o {OUT}", in("plan.csv"), "--plan");
+  expect_refused("simulate ur5 A1 --errors {IN} -o {OUT}", in("errors.json"), "--errors");
+  expect_refused(
+      "simulate ur5 A1 --errors {IN} -o " + q(in("unused.csv")) + " --write-errors {OUT}",
+      in("errors.json"), "--errors");
+}
+
+TEST_F(InputOverwrite, Report) {
+  const std::string cell =
+      "report --model " + q(in("model.json")) + " --targets " + q(in("meas.csv"));
+  expect_refused("report --model {IN} --targets " + q(in("meas.csv")) + " -o {OUT}",
+                 in("model.json"), "--model");
+  expect_refused("report --model " + q(in("model.json")) + " --targets {IN} -o {OUT}",
+                 in("meas.csv"), "--targets");
+  expect_refused(cell + " --plan {IN} -o {OUT}", in("plan.csv"), "--plan");
+}
+
+TEST_F(InputOverwrite, ReportOfAReproduceDirectory) {
+  // The input is DIR/reproduce.json: copy the directory so each spelling has its own.
+  const fs::path work = fresh_dir("report-reproduce");
+  fs::copy(in("rep"), work / "rep");
+  const fs::path input = work / "rep" / "reproduce.json";
+  const std::string bytes = read_text(input);
+  for (const fs::path& out : {input, work / "rep" / ".." / "rep" / "reproduce.json"}) {
+    const CliResult r = run_vrreg("report --reproduce " + q(work / "rep") + " -o " + q(out));
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("--reproduce '" + input.string() + "'"), std::string::npos) << r.err;
+    EXPECT_EQ(read_text(input), bytes);
+  }
+  fs::remove_all(work);
+}
+
+TEST_F(InputOverwrite, Plan) {
+  const std::string grid = " --halfwidth-mm 10 --spacing-mm 5";
+  expect_refused("plan --parts {IN}" + grid + " --robot ur5 -o {OUT}", in("parts.csv"), "--parts");
+  expect_refused("plan --parts " + q(in("parts.csv")) + grid + " --robot {IN} -o {OUT}",
+                 in("robot.yaml"), "--robot");
+}
+
+TEST_F(InputOverwrite, Calibrate) {
+  expect_refused("calibrate-testbeds --only ur5 --seeds 1 --ur5-errors {IN} -o {OUT}",
+                 in("errors.json"), "--ur5-errors");
+}
+
+TEST_F(InputOverwrite, TwoOutputsOfOneCommandMayNotBeOneFile) {
+  const fs::path work = fresh_dir("two-outputs");
+  fs::create_directories(work / "sub");
+  const CliResult r = run_vrreg("simulate ur5 A1 -o " + q(work / "x") + " --write-errors " +
+                                q(work / "sub" / ".." / "x"));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("is the same file as -o"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(work / "x"));
+  fs::remove_all(work);
+}
+
+}  // namespace
+}  // namespace vrreg::testing
