@@ -27,8 +27,6 @@ using kinematics::ChainFamily;
 
 // Default SIR standoff along the flange z axis for robots without a test bed or tool [m].
 constexpr double kDefaultToolOffsetM = 0.06;
-// sigma_noise of the paper's KUKA LWR 4+ test bed (section 5.2) [m].
-constexpr double kPaperKukaSigmaNoiseM = 0.077e-3;
 
 std::string lower(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(),
@@ -60,7 +58,7 @@ PlanSetup make_setup(const PlanArgs& args) {
   if (args.sigma_noise_mm) {
     o.sigma_noise_m = units::mm_to_m(*args.sigma_noise_mm);
   } else if (testbed && s.chain.family() == ChainFamily::kLwr) {
-    o.sigma_noise_m = kPaperKukaSigmaNoiseM;
+    o.sigma_noise_m = planning::kPaperKukaSigmaNoiseM;
     s.notes.push_back("sigma_noise: 0.077 mm, the paper's KUKA LWR 4+ value (section 5.2)");
   } else {
     o.sigma_noise_m = planning::kPaperSigmaNoiseM;

@@ -29,7 +29,7 @@ class Reader {
       : doc_(doc), source_(std::move(source)) {}
 
   [[noreturn]] void fail(const std::string& path, const std::string& message) const {
-    throw FileError(source_, doc_.line_of(path), (path.empty() ? "" : path + ": ") + message);
+    doc_.fail(source_, path, message);
   }
 
   static std::string join(const std::string& path, const std::string& key) {

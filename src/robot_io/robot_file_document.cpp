@@ -90,6 +90,11 @@ std::size_t RobotDocument::line_of(std::string path) const {
   }
 }
 
+void RobotDocument::fail(const std::string& source, const std::string& path,
+                         const std::string& message) const {
+  throw FileError(source, line_of(path), (path.empty() ? "" : path + ": ") + message);
+}
+
 RobotDocument parse_robot_json(const std::string& text, const std::string& source) {
   RobotDocument doc;
   doc.root = parse_json_document(text, source, "robot file");

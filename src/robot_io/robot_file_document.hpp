@@ -14,6 +14,9 @@ struct RobotDocument {
 
   /// Line of `path` or of its nearest recorded ancestor; 0 when unknown.
   [[nodiscard]] std::size_t line_of(std::string path) const;
+  /// Throws FileError "source:line: path: message", the line that of `path`.
+  [[noreturn]] void fail(const std::string& source, const std::string& path,
+                         const std::string& message) const;
 };
 
 /// Parses JSON text (syntax errors throw FileError with the line).

@@ -6,6 +6,9 @@ namespace vrreg::planning {
 /// sigma_noise of the paper's UR5 test bed, dataset A1 (Table 1): 0.114 mm, in m.
 inline constexpr double kPaperSigmaNoiseM = 0.114e-3;
 
+/// sigma_noise of the paper's KUKA LWR 4+ test bed (section 5.2): 0.077 mm, in m.
+inline constexpr double kPaperKukaSigmaNoiseM = 0.077e-3;
+
 /// Factor of Eq. 9: d_min > 2.5 sigma_noise.
 inline constexpr double kDminNoiseFactor = 2.5;
 
