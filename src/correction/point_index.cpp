@@ -4,7 +4,7 @@
 #include <nanoflann.hpp>
 
 namespace vrreg::detail {
-namespace {
+namespace point_index {
 
 /// nanoflann dataset adaptor over the columns of a Points3.
 struct Cloud {
@@ -24,9 +24,11 @@ struct Cloud {
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud,
                                                  3, std::size_t>;
 
-}  // namespace
+}  // namespace point_index
 
 struct PointIndex::Impl {
+  using Cloud = point_index::Cloud;
+  using Tree = point_index::Tree;
   explicit Impl(const ConstPoints3Ref& points_m)
       : cloud{Points3(points_m)}, tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {
     tree.buildIndex();

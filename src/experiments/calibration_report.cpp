@@ -5,12 +5,13 @@
 #include <string>
 
 #include "vrreg/core/format.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/experiments/testbed_calibration.hpp"
 
 namespace vrreg::experiments {
 namespace {
 
-constexpr double kMm = 1e3;
+using units::kMillimetresPerMetre;
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -54,11 +55,14 @@ std::vector<Check> checks(const CalibrationReport& r) {
   if (!r.ur5.empty()) {
     using S = Ur5SeedFigures;
     band("UR5 A1 uncorrected RMS_T (median)",
-         median_of<S>(r.ur5, [](const S& s) { return kMm * s.a1.unc_rms_t_m; }), 0.45, 0.90, " mm");
+         median_of<S>(r.ur5, [](const S& s) { return kMillimetresPerMetre * s.a1.unc_rms_t_m; }),
+         0.45, 0.90, " mm");
     band("UR5 A1 sigma_L (median)",
-         median_of<S>(r.ur5, [](const S& s) { return kMm * s.a1.sigma_l_m; }), 0.40, 0.85, " mm");
+         median_of<S>(r.ur5, [](const S& s) { return kMillimetresPerMetre * s.a1.sigma_l_m; }),
+         0.40, 0.85, " mm");
     band("UR5 A1 corrected RMS_T, octuplet 50 mm (median)",
-         median_of<S>(r.ur5, [](const S& s) { return kMm * s.a1.cor_rms_t_m; }), 0.15, 0.33, " mm");
+         median_of<S>(r.ur5, [](const S& s) { return kMillimetresPerMetre * s.a1.cor_rms_t_m; }),
+         0.15, 0.33, " mm");
     int below = 0;
     for (const S& s : r.ur5) below += s.a2.cor_rms_t_m < s.a1.cor_rms_t_m ? 1 : 0;
     out.push_back({"UR5 A2 corrected RMS_T (25 mm) below A1's", "every seed",
@@ -71,8 +75,8 @@ std::vector<Check> checks(const CalibrationReport& r) {
     using S = Lwr4SeedFigures;
     double lo = 1e9, hi = 0.0;
     for (std::size_t m = 0; m < 4; ++m) {
-      const double v =
-          median_of<S>(r.lwr4, [m](const S& s) { return kMm * s.strategy1[m].unc_rms_t_m; });
+      const double v = median_of<S>(
+          r.lwr4, [m](const S& s) { return kMillimetresPerMetre * s.strategy1[m].unc_rms_t_m; });
       band(
           "KUKA Strategy 1 uncorrected RMS_T, configuration " + std::to_string(m + 1) + " (median)",
           v, 0.35, 1.8, " mm");
@@ -95,40 +99,44 @@ void ur5_tables(const std::vector<Ur5SeedFigures>& seeds, std::string& md) {
       "| B cor 5 mm | B gamma 5 mm % | B N_bad 50 / 5 mm | B monotone |\n";
   md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const S& s : seeds) {
-    md += "| " + std::to_string(s.seed) + " | " + format_fixed(kMm * s.a1.sigma_opt_m, 3) + " | " +
-          format_fixed(kMm * s.a1.sigma_l_m, 3) + " | " + format_fixed(s.a1.rho, 1) + " | " +
-          format_fixed(kMm * s.a1.unc_rms_t_m, 3) + " | " +
-          format_fixed(kMm * s.a1.cor_rms_t_m, 3) + " | " + format_fixed(100 * s.a1.gamma, 0) +
-          " | " + format_fixed(kMm * s.a2.sigma_l_m, 3) + " | " +
-          format_fixed(kMm * s.a2.unc_rms_t_m, 3) + " | " +
-          format_fixed(kMm * s.a2.cor_rms_t_m, 3) + " | " + format_fixed(100 * s.a2.gamma, 0) +
-          " | " + format_fixed(kMm * s.b_unc_rms_t_m, 3) + " | " +
-          format_fixed(kMm * s.b_cor_rms_t_m.front(), 3) + " | " +
-          format_fixed(kMm * s.b_cor_rms_t_m.back(), 3) + " | " + format_fixed(b_gamma_min(s), 0) +
-          " | " + std::to_string(s.b_n_bad.front()) + " / " + std::to_string(s.b_n_bad.back()) +
-          " | " + (monotone(s) ? "yes" : "no") + " |\n";
+    md += "| " + std::to_string(s.seed) + " | " +
+          format_fixed(kMillimetresPerMetre * s.a1.sigma_opt_m, 3) + " | " +
+          format_fixed(kMillimetresPerMetre * s.a1.sigma_l_m, 3) + " | " +
+          format_fixed(s.a1.rho, 1) + " | " +
+          format_fixed(kMillimetresPerMetre * s.a1.unc_rms_t_m, 3) + " | " +
+          format_fixed(kMillimetresPerMetre * s.a1.cor_rms_t_m, 3) + " | " +
+          format_fixed(100 * s.a1.gamma, 0) + " | " +
+          format_fixed(kMillimetresPerMetre * s.a2.sigma_l_m, 3) + " | " +
+          format_fixed(kMillimetresPerMetre * s.a2.unc_rms_t_m, 3) + " | " +
+          format_fixed(kMillimetresPerMetre * s.a2.cor_rms_t_m, 3) + " | " +
+          format_fixed(100 * s.a2.gamma, 0) + " | " +
+          format_fixed(kMillimetresPerMetre * s.b_unc_rms_t_m, 3) + " | " +
+          format_fixed(kMillimetresPerMetre * s.b_cor_rms_t_m.front(), 3) + " | " +
+          format_fixed(kMillimetresPerMetre * s.b_cor_rms_t_m.back(), 3) + " | " +
+          format_fixed(b_gamma_min(s), 0) + " | " + std::to_string(s.b_n_bad.front()) + " / " +
+          std::to_string(s.b_n_bad.back()) + " | " + (monotone(s) ? "yes" : "no") + " |\n";
   }
   const auto med = [&](const std::function<double(const S&)>& get, int decimals) {
     return format_fixed(median_of<S>(seeds, get), decimals);
   };
   int mono = 0;
   for (const S& s : seeds) mono += monotone(s) ? 1 : 0;
-  md += "| **median** | " + med([](const S& s) { return kMm * s.a1.sigma_opt_m; }, 3) + " | " +
-        med([](const S& s) { return kMm * s.a1.sigma_l_m; }, 3) + " | " +
+  md += "| **median** | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.a1.sigma_opt_m; }, 3) + " | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.a1.sigma_l_m; }, 3) + " | " +
         med([](const S& s) { return s.a1.rho; }, 1) + " | " +
-        med([](const S& s) { return kMm * s.a1.unc_rms_t_m; }, 3) + " | " +
-        med([](const S& s) { return kMm * s.a1.cor_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.a1.unc_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.a1.cor_rms_t_m; }, 3) + " | " +
         med([](const S& s) { return 100 * s.a1.gamma; }, 0) + " | " +
-        med([](const S& s) { return kMm * s.a2.sigma_l_m; }, 3) + " | " +
-        med([](const S& s) { return kMm * s.a2.unc_rms_t_m; }, 3) + " | " +
-        med([](const S& s) { return kMm * s.a2.cor_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.a2.sigma_l_m; }, 3) + " | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.a2.unc_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.a2.cor_rms_t_m; }, 3) + " | " +
         med([](const S& s) { return 100 * s.a2.gamma; }, 0) + " | " +
-        med([](const S& s) { return kMm * s.b_unc_rms_t_m; }, 3) + " | " +
-        med([](const S& s) { return kMm * s.b_cor_rms_t_m.front(); }, 3) + " | " +
-        med([](const S& s) { return kMm * s.b_cor_rms_t_m.back(); }, 3) + " | " +
-        med(b_gamma_min, 0) + " | " +
-        med([](const S& s) { return double(s.b_n_bad.front()); }, 1) + " / " +
-        med([](const S& s) { return double(s.b_n_bad.back()); }, 1) + " | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.b_unc_rms_t_m; }, 3) + " | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.b_cor_rms_t_m.front(); }, 3) + " | " +
+        med([](const S& s) { return kMillimetresPerMetre * s.b_cor_rms_t_m.back(); }, 3) + " | " +
+        med(b_gamma_min, 0) + " | " + med([](const S& s) { return double(s.b_n_bad.front()); }, 1) +
+        " / " + med([](const S& s) { return double(s.b_n_bad.back()); }, 1) + " | " +
         std::to_string(mono) + " of " + std::to_string(seeds.size()) + " |\n";
   md +=
       "| paper | 0.058 | 0.626 | 5.5 | 0.666 | 0.240 | 64 | 0.522 | 0.603 | 0.168 | 72 | 0.650 "
@@ -136,12 +144,13 @@ void ur5_tables(const std::vector<Ur5SeedFigures>& seeds, std::string& md) {
 
   md += "B, medians over seeds, per cube edge:\n\n| cube edge mm |";
   const std::vector<double>& edges = seeds.front().b_cube_edge_m;
-  for (double e : edges) md += " " + format_fixed(kMm * e, 0) + " |";
+  for (double e : edges) md += " " + format_fixed(kMillimetresPerMetre * e, 0) + " |";
   md += "\n|---|";
   for (std::size_t i = 0; i < edges.size(); ++i) md += "---|";
   md += "\n| cor RMS_T mm |";
   for (std::size_t i = 0; i < edges.size(); ++i) {
-    md += " " + med([i](const S& s) { return kMm * s.b_cor_rms_t_m[i]; }, 3) + " |";
+    md +=
+        " " + med([i](const S& s) { return kMillimetresPerMetre * s.b_cor_rms_t_m[i]; }, 3) + " |";
   }
   md += "\n| N_bad |";
   for (std::size_t i = 0; i < edges.size(); ++i) {
@@ -171,9 +180,12 @@ void lwr4_table(const std::vector<Lwr4SeedFigures>& seeds, bool strategy2, std::
     md += "| " + std::to_string(s.seed) + " | " +
           format_fixed(100 * s.switched_points_fraction, 1) + " | " +
           format_fixed(100 * s.switched_locations_fraction, 1);
-    for (std::size_t m = 0; m < 4; ++m) md += " | " + format_fixed(kMm * pick(s, m).sigma_l_m, 3);
-    for (std::size_t m = 0; m < 4; ++m) md += " | " + format_fixed(kMm * pick(s, m).unc_rms_t_m, 3);
-    for (std::size_t m = 0; m < 4; ++m) md += " | " + format_fixed(kMm * pick(s, m).cor_rms_t_m, 3);
+    for (std::size_t m = 0; m < 4; ++m)
+      md += " | " + format_fixed(kMillimetresPerMetre * pick(s, m).sigma_l_m, 3);
+    for (std::size_t m = 0; m < 4; ++m)
+      md += " | " + format_fixed(kMillimetresPerMetre * pick(s, m).unc_rms_t_m, 3);
+    for (std::size_t m = 0; m < 4; ++m)
+      md += " | " + format_fixed(kMillimetresPerMetre * pick(s, m).cor_rms_t_m, 3);
     for (std::size_t m = 0; m < 4; ++m) md += " | " + format_fixed(100 * pick(s, m).gamma, 0);
     md += " |\n";
   }
@@ -187,11 +199,12 @@ void lwr4_table(const std::vector<Lwr4SeedFigures>& seeds, bool strategy2, std::
     return format_fixed(
         median_of<S>(seeds, [&](const S& s) { return scale * (pick(s, m).*field); }), decimals);
   };
-  for (std::size_t m = 0; m < 4; ++m) md += " | " + med(m, kMm, &RrbcRunFigures::sigma_l_m, 3);
   for (std::size_t m = 0; m < 4; ++m)
-    md += " | " + med(m, kMm, &RrbcRunFigures::unc_rms_t_m, 3);
+    md += " | " + med(m, kMillimetresPerMetre, &RrbcRunFigures::sigma_l_m, 3);
   for (std::size_t m = 0; m < 4; ++m)
-    md += " | " + med(m, kMm, &RrbcRunFigures::cor_rms_t_m, 3);
+    md += " | " + med(m, kMillimetresPerMetre, &RrbcRunFigures::unc_rms_t_m, 3);
+  for (std::size_t m = 0; m < 4; ++m)
+    md += " | " + med(m, kMillimetresPerMetre, &RrbcRunFigures::cor_rms_t_m, 3);
   for (std::size_t m = 0; m < 4; ++m) md += " | " + med(m, 100.0, &RrbcRunFigures::gamma, 0);
   md += " |\n";
   md += strategy2

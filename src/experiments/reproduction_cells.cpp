@@ -4,13 +4,14 @@
 #include <limits>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/experiments/findings.hpp"
 #include "vrreg/experiments/statistics.hpp"
 
 namespace vrreg::experiments {
 namespace {
 
-constexpr double kMm = 1e3;
+using units::kMillimetresPerMetre;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class Cells {
@@ -27,14 +28,14 @@ class Cells {
 void table1(const Table1Entry& e, Cells& c) {
   const std::string p = "/table1/" + e.dataset + "/";
   const RrbcRunFigures& f = e.figures;
-  c.key(p + "d_mm", kMm * e.d_m);
-  c.key(p + "cube_mm", kMm * e.cube_edge_m);
-  c.value(p + "sigma_opt_mm", kMm * f.sigma_opt_m);
-  c.value(p + "sigma_l_mm", kMm * f.sigma_l_m);
-  c.value(p + "sigma_noise_mm", kMm * f.sigma_noise_m);
+  c.key(p + "d_mm", kMillimetresPerMetre * e.d_m);
+  c.key(p + "cube_mm", kMillimetresPerMetre * e.cube_edge_m);
+  c.value(p + "sigma_opt_mm", kMillimetresPerMetre * f.sigma_opt_m);
+  c.value(p + "sigma_l_mm", kMillimetresPerMetre * f.sigma_l_m);
+  c.value(p + "sigma_noise_mm", kMillimetresPerMetre * f.sigma_noise_m);
   c.value(p + "rho", f.rho);
-  c.value(p + "unc_rms_t_mm", kMm * f.unc_rms_t_m);
-  c.value(p + "cor_rms_t_mm", kMm * f.cor_rms_t_m);
+  c.value(p + "unc_rms_t_mm", kMillimetresPerMetre * f.unc_rms_t_m);
+  c.value(p + "cor_rms_t_mm", kMillimetresPerMetre * f.cor_rms_t_m);
   c.value(p + "gamma_percent", 100.0 * f.gamma);
   c.count(p + "n_bad", f.n_bad);
   c.count(p + "n_targets", f.n_targets);
@@ -43,8 +44,8 @@ void table1(const Table1Entry& e, Cells& c) {
 
 void dataset_b(const DistanceSweep& b, Cells& c) {
   const SweepStep& lo = b.at_d_min();
-  c.value("/dataset_b/unc_rms_t_mm", kMm * b.unc_rms_t_m);
-  c.value("/dataset_b/cor_rms_t_at_d_min_mm", kMm * lo.cor_rms_t_m);
+  c.value("/dataset_b/unc_rms_t_mm", kMillimetresPerMetre * b.unc_rms_t_m);
+  c.value("/dataset_b/cor_rms_t_at_d_min_mm", kMillimetresPerMetre * lo.cor_rms_t_m);
   c.value("/dataset_b/gamma_at_d_min_percent", 100.0 * lo.gamma);
   c.count("/dataset_b/n_bad_at_d_min", lo.n_bad);
   c.count("/dataset_b/n_bad_at_d_max", b.at_d_max().n_bad);
@@ -53,16 +54,16 @@ void dataset_b(const DistanceSweep& b, Cells& c) {
   for (std::size_t k = 0; k < b.steps.size(); ++k) {
     const SweepStep& s = b.steps[k];
     const std::string p = "/figure7/" + std::to_string(k) + "/";
-    c.key(p + "d_mm", kMm * s.d_m);
-    c.key(p + "cube_mm", kMm * s.cube_edge_m);
-    c.value(p + "cor_rms_t_mm", kMm * s.cor_rms_t_m);
+    c.key(p + "d_mm", kMillimetresPerMetre * s.d_m);
+    c.key(p + "cube_mm", kMillimetresPerMetre * s.cube_edge_m);
+    c.value(p + "cor_rms_t_mm", kMillimetresPerMetre * s.cor_rms_t_m);
     c.count(p + "n_bad", s.n_bad);
     c.value(p + "gamma_percent", 100.0 * s.gamma);
   }
 }
 
 void table2(const Table2& t, Cells& c) {
-  c.value("/kuka/sigma_noise_mm", kMm * t.sigma_noise_m);
+  c.value("/kuka/sigma_noise_mm", kMillimetresPerMetre * t.sigma_noise_m);
   c.value("/kuka/switched_points_fraction", t.strategy2.switched_points_fraction());
   c.value("/kuka/switched_locations_fraction", t.strategy2.switched_locations_fraction());
   c.count("/kuka/n_points", t.strategy2.n_points);
@@ -78,10 +79,10 @@ void table2(const Table2& t, Cells& c) {
     const bool per_label = e.strategy != 3;
     c.key(p + "config", e.config);
     c.key(p + "strategy", e.strategy);
-    c.value(p + "sigma_l_mm", per_label ? kMm * f.sigma_l_m : kNaN);
+    c.value(p + "sigma_l_mm", per_label ? kMillimetresPerMetre * f.sigma_l_m : kNaN);
     c.value(p + "rho", per_label ? f.rho : kNaN);
-    c.value(p + "unc_rms_t_mm", kMm * f.unc_rms_t_m);
-    c.value(p + "cor_rms_t_mm", kMm * f.cor_rms_t_m);
+    c.value(p + "unc_rms_t_mm", kMillimetresPerMetre * f.unc_rms_t_m);
+    c.value(p + "cor_rms_t_mm", kMillimetresPerMetre * f.cor_rms_t_m);
     c.value(p + "gamma_percent", 100.0 * f.gamma);
     c.count(p + "n_bad", f.n_bad);
     c.count(p + "n_targets", f.n_targets);

@@ -4,12 +4,13 @@
 #include <cstdio>
 
 #include "vrreg/core/format.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/experiments/paper_numbers.hpp"
 
 namespace vrreg::experiments {
 namespace {
 
-constexpr double kMm = 1e3;
+using units::kMillimetresPerMetre;
 
 // Shortest round-trip-ish text of a number; empty for NaN.
 std::string num(double v) {
@@ -30,8 +31,9 @@ std::string sd_of(const CellTable& t, const std::string& pointer) {
 void histogram_rows(const Histogram& h, const std::string& prefix, std::string& out) {
   for (std::size_t k = 0; k < h.counts.size(); ++k) {
     const double lo = h.lo_m + h.bin_width_m * static_cast<double>(k);
-    out += prefix + num(kMm * lo) + "," + num(kMm * (lo + h.bin_width_m)) + "," +
-           std::to_string(h.counts[k]) + "\n";
+    out += prefix + num(kMillimetresPerMetre * lo) + "," +
+           num(kMillimetresPerMetre * (lo + h.bin_width_m)) + "," + std::to_string(h.counts[k]) +
+           "\n";
   }
 }
 
@@ -156,11 +158,15 @@ std::string figure10_targets_csv(const Reproduction& r) {
                            : failed > 0 ? "failed_at_other_d"
                                         : "succeeded_at_all_d";
     out += std::to_string(n + 1) + "," + b.target_points[n] + "," +
-           num(kMm * b.target_robot_m(0, i)) + "," + num(kMm * b.target_robot_m(1, i)) + "," +
-           num(kMm * b.target_robot_m(2, i)) + "," + num(kMm * b.unc_tre_m[i]) + "," +
-           num(kMm * hi.cor_tre_m[i]) + "," + num(kMm * lo.cor_tre_m[i]) + "," +
-           num(kMm * (lo.cor_tre_m[i] - b.unc_tre_m[i])) + "," + (f_hi ? "1" : "0") + "," +
-           (f_lo ? "1" : "0") + "," + std::to_string(failed) + "," + category + "\n";
+           num(kMillimetresPerMetre * b.target_robot_m(0, i)) + "," +
+           num(kMillimetresPerMetre * b.target_robot_m(1, i)) + "," +
+           num(kMillimetresPerMetre * b.target_robot_m(2, i)) + "," +
+           num(kMillimetresPerMetre * b.unc_tre_m[i]) + "," +
+           num(kMillimetresPerMetre * hi.cor_tre_m[i]) + "," +
+           num(kMillimetresPerMetre * lo.cor_tre_m[i]) + "," +
+           num(kMillimetresPerMetre * (lo.cor_tre_m[i] - b.unc_tre_m[i])) + "," +
+           (f_hi ? "1" : "0") + "," + (f_lo ? "1" : "0") + "," + std::to_string(failed) + "," +
+           category + "\n";
   }
   return out;
 }
@@ -181,9 +187,11 @@ std::string tre_per_target_csv(const Reproduction& r) {
       const auto i = static_cast<Eigen::Index>(n);
       out += figure + "," + std::to_string(e.strategy) + "," + std::to_string(e.config) + "," +
              std::to_string(n + 1) + "," + e.target_points[n] + "," +
-             num(kMm * e.target_robot_m(0, i)) + "," + num(kMm * e.target_robot_m(1, i)) + "," +
-             num(kMm * e.target_robot_m(2, i)) + "," + num(kMm * e.figures.unc_tre_m[i]) + "," +
-             num(kMm * e.figures.cor_tre_m[i]) + "\n";
+             num(kMillimetresPerMetre * e.target_robot_m(0, i)) + "," +
+             num(kMillimetresPerMetre * e.target_robot_m(1, i)) + "," +
+             num(kMillimetresPerMetre * e.target_robot_m(2, i)) + "," +
+             num(kMillimetresPerMetre * e.figures.unc_tre_m[i]) + "," +
+             num(kMillimetresPerMetre * e.figures.cor_tre_m[i]) + "\n";
     }
   }
   return out;

@@ -3,11 +3,12 @@
 #include <cmath>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 
 namespace vrreg::experiments {
 namespace {
 
-constexpr double kMm = 1e3;
+using units::kMillimetresPerMetre;
 
 nlohmann::json number(double v, bool integral) {
   if (std::isnan(v)) return nullptr;
@@ -17,21 +18,22 @@ nlohmann::json number(double v, bool integral) {
 
 nlohmann::json mm_list(const Eigen::VectorXd& v) {
   nlohmann::json out = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(kMm * v[i]);
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(kMillimetresPerMetre * v[i]);
   return out;
 }
 
 nlohmann::json positions_mm(const Points3& p) {
   nlohmann::json out = nlohmann::json::array();
   for (Eigen::Index i = 0; i < p.cols(); ++i) {
-    out.push_back({kMm * p(0, i), kMm * p(1, i), kMm * p(2, i)});
+    out.push_back({kMillimetresPerMetre * p(0, i), kMillimetresPerMetre * p(1, i),
+                   kMillimetresPerMetre * p(2, i)});
   }
   return out;
 }
 
 nlohmann::json histogram_json(const Histogram& h) {
-  return {{"lo_mm", kMm * h.lo_m},
-          {"bin_mm", kMm * h.bin_width_m},
+  return {{"lo_mm", kMillimetresPerMetre * h.lo_m},
+          {"bin_mm", kMillimetresPerMetre * h.bin_width_m},
           {"counts", h.counts},
           {"below", h.below},
           {"above", h.above}};
@@ -74,14 +76,14 @@ nlohmann::json figure_data_json(const Reproduction& r) {
     if (!*e || !(*e)->figures.l_histogram) continue;
     nlohmann::json h = histogram_json(*(*e)->figures.l_histogram);
     h["dataset"] = (*e)->dataset;
-    h["sigma_l_mm"] = kMm * (*e)->figures.sigma_l_m;
+    h["sigma_l_mm"] = kMillimetresPerMetre * (*e)->figures.sigma_l_m;
     hist.push_back(h);
   }
   if (r.b) {
     for (const SweepStep& s : r.b->steps) {
       tre.push_back({{"dataset", "B"},
-                     {"d_mm", kMm * s.d_m},
-                     {"cube_mm", kMm * s.cube_edge_m},
+                     {"d_mm", kMillimetresPerMetre * s.d_m},
+                     {"cube_mm", kMillimetresPerMetre * s.cube_edge_m},
                      {"point", r.b->target_points},
                      {"robot_mm", positions_mm(r.b->target_robot_m)},
                      {"unc_tre_mm", mm_list(r.b->unc_tre_m)},
@@ -95,7 +97,7 @@ nlohmann::json figure_data_json(const Reproduction& r) {
         h["dataset"] = "lwr4";
         h["strategy"] = e.strategy;
         h["config"] = e.config;
-        h["sigma_l_mm"] = kMm * e.figures.sigma_l_m;
+        h["sigma_l_mm"] = kMillimetresPerMetre * e.figures.sigma_l_m;
         hist.push_back(h);
       }
       tre.push_back({{"dataset", "lwr4"},

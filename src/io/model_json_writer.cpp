@@ -9,21 +9,21 @@
 namespace vrreg::io {
 namespace {
 
-using json = nlohmann::ordered_json;
+using ordered_json = nlohmann::ordered_json;
 
 double finite(double value, const char* key) {
   VRREG_THROW_UNLESS(std::isfinite(value), "model: " << key << " is not finite (" << value << ")");
   return value;
 }
 
-json mm_array(const Eigen::Vector3d& v_m, const char* key) {
-  json out = json::array();
+ordered_json mm_array(const Eigen::Vector3d& v_m, const char* key) {
+  ordered_json out = ordered_json::array();
   for (int axis = 0; axis < 3; ++axis) out.push_back(finite(units::m_to_mm(v_m(axis)), key));
   return out;
 }
 
-json mm2_array(const Eigen::Vector3d& v_m2, const char* key) {
-  json out = json::array();
+ordered_json mm2_array(const Eigen::Vector3d& v_m2, const char* key) {
+  ordered_json out = ordered_json::array();
   for (int axis = 0; axis < 3; ++axis) {
     out.push_back(
         finite(v_m2(axis) * units::kMillimetresPerMetre * units::kMillimetresPerMetre, key));
@@ -31,10 +31,12 @@ json mm2_array(const Eigen::Vector3d& v_m2, const char* key) {
   return out;
 }
 
-json optional_int(const std::optional<int>& value) { return value ? json(*value) : json(nullptr); }
+ordered_json optional_int(const std::optional<int>& value) {
+  return value ? ordered_json(*value) : ordered_json(nullptr);
+}
 
-json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m) {
-  json out = json::object();
+ordered_json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m) {
+  ordered_json out = ordered_json::object();
   out["point"] = f.point;
   out["config"] = optional_int(f.config);
   out["robot_mm"] = mm_array(f.robot_m, "fiducial robot_mm");
@@ -43,7 +45,7 @@ json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m) {
   if (f.source_line > 0) out["line"] = f.source_line;
   out["sensor_sq_dev_mm2"] = mm2_array(f.sensor_sq_dev_m2, "fiducial sensor_sq_dev_mm2");
   if (!f.q_rad.empty()) {
-    json q = json::array();
+    ordered_json q = ordered_json::array();
     for (const double v : f.q_rad) q.push_back(finite(v, "fiducial q_rad"));
     out["q_rad"] = std::move(q);
   }
@@ -52,9 +54,9 @@ json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m) {
 }
 
 // Procedure 2 (paper section 4.4): written only for models built with a strategy.
-json procedure2_json(const RegistrationModel& model) {
+ordered_json procedure2_json(const RegistrationModel& model) {
   const planning::Procedure2& p = model.procedure2;
-  json out = json::object();
+  ordered_json out = ordered_json::object();
   out["strategy"] = planning::strategy_number(p.strategy);
   out["joint_norm"] = kinematics::to_string(p.joint_norm);
   if (p.seed) out["seed"] = *p.seed;
@@ -76,13 +78,13 @@ std::string format_model_json(const RegistrationModel& model) {
       "model: " << model.corrections_sensor_m.cols() << " corrections for "
                 << model.fiducials.size() << " fiducials");
   const SimilarityTransform& T = model.T_robot_sensor;
-  json out = json::object();
+  ordered_json out = ordered_json::object();
   out["format"] = "vrreg-model";
   out["version"] = RegistrationModel::kFormatVersion;
   out["units"] = {{"length", "mm"}, {"angle", "rad"}};
-  json rotation = json::array();
+  ordered_json rotation = ordered_json::array();
   for (int r = 0; r < 3; ++r) {
-    json row = json::array();
+    ordered_json row = ordered_json::array();
     for (int c = 0; c < 3; ++c) row.push_back(finite(T.rotation(r, c), "rotation"));
     rotation.push_back(std::move(row));
   }
@@ -102,7 +104,7 @@ std::string format_model_json(const RegistrationModel& model) {
       {"cube_mm", finite(units::m_to_mm(model.interpolation.cube_edge_m), "cube_mm")},
       {"match_tolerance_mm",
        finite(units::m_to_mm(model.interpolation.match_tolerance_m), "match_tolerance_mm")}};
-  json fiducials = json::array();
+  ordered_json fiducials = ordered_json::array();
   for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
     fiducials.push_back(fiducial_json(
         model.fiducials[j], model.corrections_sensor_m.col(static_cast<Eigen::Index>(j))));
@@ -110,7 +112,7 @@ std::string format_model_json(const RegistrationModel& model) {
   out["fiducials"] = std::move(fiducials);
   try {
     return out.dump(2) + "\n";
-  } catch (const json::type_error& e) {  // invalid UTF-8 in a label or the source name
+  } catch (const ordered_json::type_error& e) {  // invalid UTF-8 in a label or the source name
     VRREG_THROW_UNLESS(false, "model: cannot write as JSON: " << e.what());
   }
 }

@@ -14,10 +14,10 @@
 namespace vrreg::io {
 namespace {
 
-constexpr std::size_t kMaxLineBytes = 1024 * 1024;
+constexpr std::size_t kPartsMaxLineBytes = 1024 * 1024;
 constexpr double kSamePositionM = 1e-9;
 
-const detail::PointColumnRules kRules{
+const detail::PointColumnRules kPartsRules{
     "parts file",
     "a parts file has point, robot_x_mm, robot_y_mm, robot_z_mm (or _m); a measurement CSV's "
     "role, sensor_*, config, repeat and q* columns are also accepted",
@@ -38,7 +38,7 @@ bool is_part_row(const std::vector<std::string_view>& fields, const detail::Poin
 }  // namespace
 
 std::vector<PartRecord> parse_parts_csv(std::istream& in, const std::string& source_name) {
-  detail::LineReader reader(in, source_name, kMaxLineBytes);
+  detail::LineReader reader(in, source_name, kPartsMaxLineBytes);
   std::string line;
   std::vector<std::string_view> fields;
   std::optional<detail::PointColumns> columns;
@@ -54,7 +54,7 @@ std::vector<PartRecord> parse_parts_csv(std::istream& in, const std::string& sou
     const std::size_t at = reader.line_number();
     if (!columns) {
       header_line = at;
-      columns = detail::parse_point_columns(fields, source_name, at, kRules);
+      columns = detail::parse_point_columns(fields, source_name, at, kPartsRules);
       continue;
     }
     detail::check_field_count(fields, *columns, source_name, at);

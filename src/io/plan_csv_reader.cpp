@@ -14,9 +14,9 @@
 namespace vrreg::io {
 namespace {
 
-constexpr std::size_t kMaxLineBytes = 1024 * 1024;
+constexpr std::size_t kPlanMaxLineBytes = 1024 * 1024;
 
-const detail::PointColumnRules kRules{
+const detail::PointColumnRules kPlanRules{
     "plan file",
     "a plan file has point, role, part, robot_x_mm, robot_y_mm, robot_z_mm (or _m), config, "
     "q1_rad..qN_rad (or _deg)",
@@ -66,7 +66,7 @@ PlanRow parse_row(const std::vector<std::string_view>& fields, const detail::Poi
 }  // namespace
 
 PlanFile parse_plan_csv(std::istream& in, const std::string& source_name) {
-  detail::LineReader reader(in, source_name, kMaxLineBytes);
+  detail::LineReader reader(in, source_name, kPlanMaxLineBytes);
   std::string line;
   std::vector<std::string_view> fields;
   std::optional<detail::PointColumns> columns;
@@ -87,10 +87,10 @@ PlanFile parse_plan_csv(std::istream& in, const std::string& source_name) {
     const std::size_t at = reader.line_number();
     if (!columns) {
       header_line = at;
-      columns = detail::parse_point_columns(fields, source_name, at, kRules);
+      columns = detail::parse_point_columns(fields, source_name, at, kPlanRules);
       if (columns->role == detail::PointColumns::kAbsent) {
         throw FileError(source_name, at,
-                        "header: missing column 'role' (" + std::string(kRules.allowed) + ")");
+                        "header: missing column 'role' (" + std::string(kPlanRules.allowed) + ")");
       }
       continue;
     }

@@ -12,12 +12,13 @@
 
 #include "limits_fit.hpp"
 #include "lwr_solver.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/pose.hpp"
 
 namespace vrreg::kinematics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using units::kPi;
 
 // An entry of R(psi) = A sin(psi) + B cos(psi) + C.
 struct Harmonic {

@@ -20,7 +20,7 @@
 namespace vrreg::kinematics::detail {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using units::kPi;
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d k;

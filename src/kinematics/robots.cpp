@@ -9,7 +9,7 @@
 namespace vrreg::kinematics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using units::kPi;
 
 // UR: only d1, a2, a3, d4, d5, d6 differ between models (manufacturer DH tables, metres).
 SerialChain make_ur(const char* name, double d1, double a2, double a3, double d4, double d5,

@@ -5,12 +5,13 @@
 #include <utility>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/pose.hpp"
 
 namespace vrreg::kinematics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using units::kPi;
 
 bool is_identity(const Eigen::Isometry3d& t) { return t.matrix() == Eigen::Matrix4d::Identity(); }
 

@@ -23,7 +23,7 @@
 namespace vrreg::kinematics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using units::kPi;
 
 struct UrGeometry {
   double d1, a2, a3, d4, d5, d6;

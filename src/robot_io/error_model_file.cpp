@@ -38,9 +38,9 @@ json list(const std::vector<double>& values, double scale) {
 }
 
 // Reads one document over defaults; every error names file, line (YAML) and key path.
-class Reader {
+class ErrorModelReader {
  public:
-  Reader(const detail::RobotDocument& doc, std::string source)
+  ErrorModelReader(const detail::RobotDocument& doc, std::string source)
       : doc_(doc), source_(std::move(source)) {}
 
   [[noreturn]] void fail(const std::string& path, const std::string& message) const {
@@ -119,7 +119,7 @@ class Reader {
   std::string source_;
 };
 
-void read_robot(const Reader& reader, const json& root, std::size_t n_joints,
+void read_robot(const ErrorModelReader& reader, const json& root, std::size_t n_joints,
                 simulation::RobotErrorModel& r) {
   const json* robot = reader.object(
       root, "", "robot",
@@ -145,7 +145,7 @@ void read_robot(const Reader& reader, const json& root, std::size_t n_joints,
   reader.number(*robot, "robot", "payload_kg", 1.0, r.payload_kg);
 }
 
-void read_tracker(const Reader& reader, const json& root, simulation::TrackerModel& t) {
+void read_tracker(const ErrorModelReader& reader, const json& root, simulation::TrackerModel& t) {
   const json* tracker = reader.object(
       root, "", "tracker",
       {"distance_m", "azimuth_deg", "elevation_deg", "noise_sigma_mm", "readings_per_location"});
@@ -207,7 +207,7 @@ simulation::TestbedErrorModel parse_error_model(const std::string& text, const s
   const detail::RobotDocument doc = text[first] == '{' || text[first] == '['
                                         ? detail::parse_robot_json(text, source)
                                         : detail::parse_robot_yaml(text, source);
-  const Reader reader(doc, source);
+  const ErrorModelReader reader(doc, source);
   const json& root = doc.root;
   if (!root.is_object()) reader.fail("", "expected an object with keys robot and tracker");
   for (const auto& item : root.items()) {

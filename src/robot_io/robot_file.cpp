@@ -23,9 +23,9 @@ using kinematics::JointLimits;
 using nlohmann::json;
 
 // Validating reader over a RobotDocument: every error names the file, line and key path.
-class Reader {
+class RobotReader {
  public:
-  Reader(const detail::RobotDocument& doc, std::string source)
+  RobotReader(const detail::RobotDocument& doc, std::string source)
       : doc_(doc), source_(std::move(source)) {}
 
   [[noreturn]] void fail(const std::string& path, const std::string& message) const {
@@ -179,7 +179,7 @@ class Reader {
 };
 
 kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std::string& source) {
-  const Reader r(doc, source);
+  const RobotReader r(doc, source);
   const json& root = doc.root;
   if (root.is_null()) r.fail("", "empty robot file (expected a DH table under \"dh\")");
   r.require_object(root, "");

@@ -38,8 +38,8 @@ inline CliResult run_vrreg_in(const std::filesystem::path& cwd, const std::strin
   const std::string tag = std::to_string(::getpid()) + "-" + std::to_string(counter++);
   const auto out_path = dir / ("vrreg-cli-out-" + tag);
   const auto err_path = dir / ("vrreg-cli-err-" + tag);
-  const std::string prefix =
-      (cwd.empty() ? std::string() : "cd '" + cwd.string() + "' && ") + (env.empty() ? "" : env + " ");
+  const std::string prefix = (cwd.empty() ? std::string() : "cd '" + cwd.string() + "' && ") +
+                             (env.empty() ? "" : env + " ");
   const std::string command = prefix + "'" + VRREG_CLI_PATH + "' " + args + " >'" +
                               out_path.string() + "' 2>'" + err_path.string() + "' </dev/null";
   const int raw = std::system(command.c_str());
@@ -65,5 +65,14 @@ inline void write_text(const std::filesystem::path& path, const std::string& tex
   std::ofstream out(path, std::ios::binary);
   out << text;
 }
+
+/// The path in single quotes, for a shell command line (test paths hold no quotes).
+inline std::string shell_quoted(const std::filesystem::path& path) {
+  return "'" + path.string() + "'";
+}
+
+/// The example cell every quick start uses (examples/data/example-cell.csv).
+inline const std::string kExampleCell =
+    std::string(VRREG_SOURCE_DIR) + "/examples/data/example-cell.csv";
 
 }  // namespace vrreg::testing

@@ -16,10 +16,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kParts =
+const char* kOverwriteParts =
     "point,robot_x_mm,robot_y_mm,robot_z_mm\n"
     "hole_A,420,-140,250\nhole_B,480,-140,250\npin_C,480,-60,260\npin_D,420,-60,240\n";
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
 // Real inputs for every command, made once by the commands themselves.
 class InputOverwrite : public ::testing::Test {
@@ -27,15 +26,17 @@ class InputOverwrite : public ::testing::Test {
   static void SetUpTestSuite() {
     dir_ = new fs::path(fresh_dir("input-overwrite"));
     const fs::path& d = *dir_;
-    write_text(d / "parts.csv", kParts);
+    write_text(d / "parts.csv", kOverwriteParts);
     write_text(d / "robot.yaml", kUr5RobotYaml);
     fs::create_directories(d / "rep");
     for (const std::string& args :
-         {"simulate ur5 A1 -o " + q(d / "meas.csv") + " --write-errors " + q(d / "errors.json"),
-          "register --fiducials " + q(d / "meas.csv") + " -o " + q(d / "model.json"),
-          "plan --parts " + q(d / "parts.csv") +
-              " --halfwidth-mm 10 --spacing-mm 5 --robot ur5 -o " + q(d / "plan.csv"),
-          "reproduce --seeds 1 --only lwr4 --no-report --quiet --out " + q(d / "rep")}) {
+         {"simulate ur5 A1 -o " + shell_quoted(d / "meas.csv") + " --write-errors " +
+              shell_quoted(d / "errors.json"),
+          "register --fiducials " + shell_quoted(d / "meas.csv") + " -o " +
+              shell_quoted(d / "model.json"),
+          "plan --parts " + shell_quoted(d / "parts.csv") +
+              " --halfwidth-mm 10 --spacing-mm 5 --robot ur5 -o " + shell_quoted(d / "plan.csv"),
+          "reproduce --seeds 1 --only lwr4 --no-report --quiet --out " + shell_quoted(d / "rep")}) {
       const CliResult r = run_vrreg(args);
       ASSERT_EQ(r.status, 0) << args << "\n" << r.err;
     }
@@ -61,8 +62,8 @@ class InputOverwrite : public ::testing::Test {
                                              work / "link", work / "hard"};
     for (const fs::path& out : spellings) {
       std::string line = args;
-      line.replace(line.find("{IN}"), 4, q(copy));
-      line.replace(line.find("{OUT}"), 5, q(out));
+      line.replace(line.find("{IN}"), 4, shell_quoted(copy));
+      line.replace(line.find("{OUT}"), 5, shell_quoted(out));
       const CliResult r = run_vrreg(line);
       EXPECT_EQ(r.status, 1) << line << "\n" << r.out << r.err;
       EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -85,33 +86,35 @@ TEST_F(InputOverwrite, Register) {
 }
 
 TEST_F(InputOverwrite, Evaluate) {
-  expect_refused("evaluate --model " + q(in("model.json")) + " --targets {IN} --per-target {OUT}",
-                 in("meas.csv"), "--targets");
-  expect_refused("evaluate --model {IN} --targets " + q(in("meas.csv")) + " --per-target {OUT}",
-                 in("model.json"), "--model");
+  expect_refused(
+      "evaluate --model " + shell_quoted(in("model.json")) + " --targets {IN} --per-target {OUT}",
+      in("meas.csv"), "--targets");
+  expect_refused(
+      "evaluate --model {IN} --targets " + shell_quoted(in("meas.csv")) + " --per-target {OUT}",
+      in("model.json"), "--model");
 }
 
 TEST_F(InputOverwrite, Correct) {
-  expect_refused("correct --model " + q(in("model.json")) + " --points {IN} -o {OUT}",
+  expect_refused("correct --model " + shell_quoted(in("model.json")) + " --points {IN} -o {OUT}",
                  in("meas.csv"), "--points");
-  expect_refused("correct --model {IN} --points " + q(in("meas.csv")) + " -o {OUT}",
+  expect_refused("correct --model {IN} --points " + shell_quoted(in("meas.csv")) + " -o {OUT}",
                  in("model.json"), "--model");
 }
 
 TEST_F(InputOverwrite, Simulate) {
   expect_refused("simulate ur5 --plan {IN} -o {OUT}", in("plan.csv"), "--plan");
   expect_refused("simulate ur5 A1 --errors {IN} -o {OUT}", in("errors.json"), "--errors");
-  expect_refused(
-      "simulate ur5 A1 --errors {IN} -o " + q(in("unused.csv")) + " --write-errors {OUT}",
-      in("errors.json"), "--errors");
+  expect_refused("simulate ur5 A1 --errors {IN} -o " + shell_quoted(in("unused.csv")) +
+                     " --write-errors {OUT}",
+                 in("errors.json"), "--errors");
 }
 
 TEST_F(InputOverwrite, Report) {
-  const std::string cell =
-      "report --model " + q(in("model.json")) + " --targets " + q(in("meas.csv"));
-  expect_refused("report --model {IN} --targets " + q(in("meas.csv")) + " -o {OUT}",
+  const std::string cell = "report --model " + shell_quoted(in("model.json")) + " --targets " +
+                           shell_quoted(in("meas.csv"));
+  expect_refused("report --model {IN} --targets " + shell_quoted(in("meas.csv")) + " -o {OUT}",
                  in("model.json"), "--model");
-  expect_refused("report --model " + q(in("model.json")) + " --targets {IN} -o {OUT}",
+  expect_refused("report --model " + shell_quoted(in("model.json")) + " --targets {IN} -o {OUT}",
                  in("meas.csv"), "--targets");
   expect_refused(cell + " --plan {IN} -o {OUT}", in("plan.csv"), "--plan");
 }
@@ -123,7 +126,8 @@ TEST_F(InputOverwrite, ReportOfAReproduceDirectory) {
   const fs::path input = work / "rep" / "reproduce.json";
   const std::string bytes = read_text(input);
   for (const fs::path& out : {input, work / "rep" / ".." / "rep" / "reproduce.json"}) {
-    const CliResult r = run_vrreg("report --reproduce " + q(work / "rep") + " -o " + q(out));
+    const CliResult r =
+        run_vrreg("report --reproduce " + shell_quoted(work / "rep") + " -o " + shell_quoted(out));
     EXPECT_EQ(r.status, 1) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find("--reproduce '" + input.string() + "'"), std::string::npos) << r.err;
@@ -135,7 +139,7 @@ TEST_F(InputOverwrite, ReportOfAReproduceDirectory) {
 TEST_F(InputOverwrite, Plan) {
   const std::string grid = " --halfwidth-mm 10 --spacing-mm 5";
   expect_refused("plan --parts {IN}" + grid + " --robot ur5 -o {OUT}", in("parts.csv"), "--parts");
-  expect_refused("plan --parts " + q(in("parts.csv")) + grid + " --robot {IN} -o {OUT}",
+  expect_refused("plan --parts " + shell_quoted(in("parts.csv")) + grid + " --robot {IN} -o {OUT}",
                  in("robot.yaml"), "--robot");
 }
 
@@ -147,8 +151,8 @@ TEST_F(InputOverwrite, Calibrate) {
 TEST_F(InputOverwrite, TwoOutputsOfOneCommandMayNotBeOneFile) {
   const fs::path work = fresh_dir("two-outputs");
   fs::create_directories(work / "sub");
-  const CliResult r = run_vrreg("simulate ur5 A1 -o " + q(work / "x") + " --write-errors " +
-                                q(work / "sub" / ".." / "x"));
+  const CliResult r = run_vrreg("simulate ur5 A1 -o " + shell_quoted(work / "x") +
+                                " --write-errors " + shell_quoted(work / "sub" / ".." / "x"));
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("is the same file as -o"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(work / "x"));

@@ -22,8 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
-
 mode_t mode_of(const fs::path& path) {
   struct stat st {};
   ::stat(path.c_str(), &st);
@@ -35,12 +33,12 @@ class OutputFiles : public ::testing::Test {
   void SetUp() override {
     dir_ = fresh_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
     meas_ = dir_ / "meas.csv";
-    ASSERT_EQ(run_vrreg("simulate ur5 A1 -o " + q(meas_)).status, 0);
+    ASSERT_EQ(run_vrreg("simulate ur5 A1 -o " + shell_quoted(meas_)).status, 0);
   }
   void TearDown() override { fs::remove_all(dir_); }
 
   CliResult register_to(const fs::path& out) {
-    return run_vrreg("register --fiducials " + q(meas_) + " -o " + q(out));
+    return run_vrreg("register --fiducials " + shell_quoted(meas_) + " -o " + shell_quoted(out));
   }
   // Exit 1, one line naming `out` with `words`.
   static void expect_refused(const CliResult& r, const fs::path& out, const std::string& words) {
@@ -104,7 +102,7 @@ TEST_F(OutputFiles, LongestLegalNameWorks) {
 }
 
 TEST_F(OutputFiles, EmptyOutputNameIsRefused) {
-  const std::string m = q(meas_);
+  const std::string m = shell_quoted(meas_);
   for (const std::string& args : std::vector<std::string>{
            "register --fiducials " + m + " -o ''", "simulate ur5 A1 -o ''",
            "simulate ur5 --write-errors ''", "correct --model x --points " + m + " -o ''",
@@ -120,8 +118,9 @@ TEST_F(OutputFiles, EmptyOutputNameIsRefused) {
 
 TEST_F(OutputFiles, NegativeSeedsAreRefused) {
   for (const std::string& args : std::vector<std::string>{
-           "simulate ur5 A1 --seed -1 -o " + q(dir_ / "s.csv"), "reproduce --seed -1 --out ''",
-           "register --fiducials " + q(meas_) + " --strategy 3 --seed -1",
+           "simulate ur5 A1 --seed -1 -o " + shell_quoted(dir_ / "s.csv"),
+           "reproduce --seed -1 --out ''",
+           "register --fiducials " + shell_quoted(meas_) + " --strategy 3 --seed -1",
            "calibrate-testbeds --seeds -1", "calibrate-testbeds --seeds 3--1"}) {
     const CliResult r = run_vrreg(args);
     EXPECT_NE(r.status, 0) << args;
@@ -135,9 +134,10 @@ TEST_F(OutputFiles, FifoInputFailsAtOnce) {
   const fs::path fifo = dir_ / "in.csv";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
   for (const std::string& args :
-       {"register --fiducials " + q(fifo), "evaluate --model " + q(fifo) + " --targets " + q(meas_),
-        "plan --parts " + q(fifo) + " --robot ur5 --halfwidth-mm 10 --spacing-mm 5",
-        "simulate ur5 A1 -o " + q(dir_ / "x.csv") + " --errors " + q(fifo)}) {
+       {"register --fiducials " + shell_quoted(fifo),
+        "evaluate --model " + shell_quoted(fifo) + " --targets " + shell_quoted(meas_),
+        "plan --parts " + shell_quoted(fifo) + " --robot ur5 --halfwidth-mm 10 --spacing-mm 5",
+        "simulate ur5 A1 -o " + shell_quoted(dir_ / "x.csv") + " --errors " + shell_quoted(fifo)}) {
     const CliResult r = run_vrreg_in({}, args, "timeout 20");
     EXPECT_EQ(r.status, 1) << args << " (124: it blocked)";
     EXPECT_NE(r.err.find(fifo.string() + ": is a FIFO, not a regular file"), std::string::npos)

@@ -14,7 +14,7 @@
 namespace vrreg::testing {
 namespace {
 
-const std::string kParts =
+const std::string kFourParts =
     "# four features, UR5 base frame\n"
     "point,robot_x_mm,robot_y_mm,robot_z_mm\n"
     "hole_A,420,-140,250\nhole_B,480,-140,250\npin_C,480,-60,260\npin_D,420,-60,240\n";
@@ -35,7 +35,7 @@ class PlanCli : public ::testing::Test {
     dir_ = fresh_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
     parts_ = (dir_ / "parts.csv").string();
     plan_ = (dir_ / "plan.csv").string();
-    write_text(parts_, kParts);
+    write_text(parts_, kFourParts);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
   std::filesystem::path dir_;
@@ -110,7 +110,7 @@ TEST_F(PlanCli, DminBelowTheNoiseLimitFailsUnlessForced) {
 }
 
 TEST_F(PlanCli, UnreachablePartPointIsNamedAndNothingWritten) {
-  write_text(parts_, kParts + "far,1500,0,250\n");
+  write_text(parts_, kFourParts + "far,1500,0,250\n");
   const CliResult r =
       run_vrreg("plan --parts '" + parts_ + "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 -o '" +
                 plan_ + "'");
@@ -138,7 +138,7 @@ TEST_F(PlanCli, BadInputIsOneLineNamingTheProblem) {
       run_vrreg("plan --parts '" + parts_ + "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find(parts_ + ":2: expected 4 fields"), std::string::npos) << r.err;
-  write_text(parts_, kParts);
+  write_text(parts_, kFourParts);
   r = run_vrreg("plan --parts '" + parts_ +
                 "' --halfwidth-mm 10 --spacing-mm 5 --robot ur5 --psi-deg 10");
   EXPECT_EQ(r.status, 1);

@@ -19,7 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kSource = VRREG_SOURCE_DIR;
-const std::string kCell = kSource + "/examples/data/example-cell.csv";
 
 fs::path screenshot_dir() {
   const fs::path dir = fs::path(VRREG_CLI_PATH).parent_path().parent_path() / "browser-screenshots";
@@ -97,8 +96,9 @@ class ReportBrowser : public ::testing::Test {
 
 TEST_F(ReportBrowser, CellReportRendersEveryChart) {
   const std::string model = (dir_ / "model.json").string();
-  ASSERT_EQ(run_vrreg("register --fiducials '" + kCell + "' -o '" + model + "'").status, 0);
-  render("--model '" + model + "' --targets '" + kCell + "' --sigma-rep-mm 0.1", "cell-report");
+  ASSERT_EQ(run_vrreg("register --fiducials '" + kExampleCell + "' -o '" + model + "'").status, 0);
+  render("--model '" + model + "' --targets '" + kExampleCell + "' --sigma-rep-mm 0.1",
+         "cell-report");
 }
 
 TEST_F(ReportBrowser, ReproduceReportRendersEveryFigureAndThePlan) {

@@ -21,8 +21,6 @@ int count(const std::string& text, const std::string& what) {
   return n;
 }
 
-const std::string kCell = std::string(VRREG_SOURCE_DIR) + "/examples/data/example-cell.csv";
-
 class ReportCli : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -41,8 +39,8 @@ class ReportCli : public ::testing::Test {
 };
 
 TEST_F(ReportCli, CellReportIsOneOfflineFileWithAVerdict) {
-  register_cell(kCell);
-  const CliResult r = run_vrreg("report --model '" + model_ + "' --targets '" + kCell +
+  register_cell(kExampleCell);
+  const CliResult r = run_vrreg("report --model '" + model_ + "' --targets '" + kExampleCell +
                                 "' --sigma-rep-mm 0.1 -o '" + html_ + "' --json");
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
@@ -65,7 +63,7 @@ TEST_F(ReportCli, CellReportIsOneOfflineFileWithAVerdict) {
 
   // Same input, same bytes.
   const std::string again = (dir_ / "again.html").string();
-  ASSERT_EQ(run_vrreg("report --model '" + model_ + "' --targets '" + kCell +
+  ASSERT_EQ(run_vrreg("report --model '" + model_ + "' --targets '" + kExampleCell +
                       "' --sigma-rep-mm 0.1 -o '" + again + "'")
                 .status,
             0);
@@ -73,9 +71,9 @@ TEST_F(ReportCli, CellReportIsOneOfflineFileWithAVerdict) {
 }
 
 TEST_F(ReportCli, TableSummaryNamesTheFileAndChartCount) {
-  register_cell(kCell);
-  const CliResult r =
-      run_vrreg("report --model '" + model_ + "' --targets '" + kCell + "' -o '" + html_ + "'");
+  register_cell(kExampleCell);
+  const CliResult r = run_vrreg("report --model '" + model_ + "' --targets '" + kExampleCell +
+                                "' -o '" + html_ + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("report with 4 charts written to " + html_), std::string::npos) << r.out;
   // No repeatability given: sigma_noise comes from the repeat readings alone.
@@ -84,7 +82,7 @@ TEST_F(ReportCli, TableSummaryNamesTheFileAndChartCount) {
 
 TEST_F(ReportCli, PointLabelsCannotInjectScript) {
   // The example cell with one target renamed to a script tag.
-  std::string text = read_text(kCell);
+  std::string text = read_text(kExampleCell);
   const std::string evil = "T1-1-1</script><script>alert(1)</script>";
   for (std::size_t at = text.find("T1-1-1,"); at != std::string::npos;
        at = text.find("T1-1-1,", at + evil.size())) {
@@ -103,10 +101,10 @@ TEST_F(ReportCli, PointLabelsCannotInjectScript) {
 }
 
 TEST_F(ReportCli, MissingPlotlyIsOneLineNamingThePathAndTheSetupCommand) {
-  register_cell(kCell);
+  register_cell(kExampleCell);
   ::setenv("VRREG_PLOTLY_JS", "/nonexistent/plotly.min.js", 1);
-  const CliResult r =
-      run_vrreg("report --model '" + model_ + "' --targets '" + kCell + "' -o '" + html_ + "'");
+  const CliResult r = run_vrreg("report --model '" + model_ + "' --targets '" + kExampleCell +
+                                "' -o '" + html_ + "'");
   ::unsetenv("VRREG_PLOTLY_JS");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("/nonexistent/plotly.min.js"), std::string::npos) << r.err;
@@ -143,22 +141,23 @@ TEST_F(ReportCli, ReproduceReportDrawsWhatTheFileHolds) {
 }
 
 TEST_F(ReportCli, OptionsSayWhichReport) {
-  register_cell(kCell);
+  register_cell(kExampleCell);
   EXPECT_EQ(run_vrreg("report -o '" + html_ + "'").status, 1);
-  const CliResult both = run_vrreg("report --model '" + model_ + "' --targets '" + kCell +
+  const CliResult both = run_vrreg("report --model '" + model_ + "' --targets '" + kExampleCell +
                                    "' --reproduce '" + dir_.string() + "' -o '" + html_ + "'");
   EXPECT_EQ(both.status, 1);
   EXPECT_NE(both.err.find("either --model and --targets"), std::string::npos) << both.err;
   EXPECT_EQ(run_vrreg("report --model '" + model_ + "' -o '" + html_ + "'").status, 1);
-  EXPECT_EQ(run_vrreg("report --model '" + model_ + "' --targets '" + kCell + "'").status, 2);
+  EXPECT_EQ(run_vrreg("report --model '" + model_ + "' --targets '" + kExampleCell + "'").status,
+            2);
   EXPECT_FALSE(fs::exists(html_));
 }
 
 TEST_F(ReportCli, UnwritableOutputLeavesNothing) {
-  register_cell(kCell);
+  register_cell(kExampleCell);
   const std::string out = (dir_ / "no" / "such" / "dir" / "cell.html").string();
-  const CliResult r =
-      run_vrreg("report --model '" + model_ + "' --targets '" + kCell + "' -o '" + out + "'");
+  const CliResult r = run_vrreg("report --model '" + model_ + "' --targets '" + kExampleCell +
+                                "' -o '" + out + "'");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find(out), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));

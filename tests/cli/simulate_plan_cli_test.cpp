@@ -14,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kParts =
+const std::string kThreeParts =
     "point,robot_x_mm,robot_y_mm,robot_z_mm\n"
     "hole_A,420,-140,250\nhole_B,480,-140,250\npin_C,480,-60,260\n";
 
@@ -22,7 +22,7 @@ class SimulatePlanCli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fresh_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
-    write_text(dir_ / "parts.csv", kParts);
+    write_text(dir_ / "parts.csv", kThreeParts);
   }
   void TearDown() override { fs::remove_all(dir_); }
   std::string p(const char* name) const { return "'" + (dir_ / name).string() + "'"; }

@@ -10,6 +10,9 @@
 
 namespace vrreg::testing {
 
+/// Interpolation tests compare to closed forms; 1e-6 m leaves room for round-off only.
+inline constexpr double kTolerance = 1e-6;
+
 /// Nodes of an nx x ny x nz grid, x fastest, node (0,0,0) at origin_m [m].
 inline Points3 grid_points(int nx, int ny, int nz, const Eigen::Vector3d& spacing_m,
                            const Eigen::Vector3d& origin_m = Eigen::Vector3d::Zero()) {

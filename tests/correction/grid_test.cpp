@@ -14,7 +14,7 @@ using testing::permuted;
 using testing::random_affine_field;
 using testing::random_permutation;
 
-constexpr double kTolerance = 1e-6;
+using testing::kTolerance;
 
 GridLayout detect_or_fail(const Points3& fiducials) {
   GridDetection d = detect_grid(fiducials, kTolerance);

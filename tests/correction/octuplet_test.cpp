@@ -9,7 +9,7 @@
 namespace vrreg {
 namespace {
 
-constexpr double kTolerance = 1e-6;
+using testing::kTolerance;
 
 /// Dataset B in miniature: 8 targets, each with octuplets of edge 10, 30 and 50 mm.
 struct BLayout {

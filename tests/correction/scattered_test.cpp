@@ -20,7 +20,7 @@ using testing::random_affine_field;
 using testing::random_permutation;
 using testing::random_points;
 
-constexpr double kTolerance = 1e-6;
+using testing::kTolerance;
 
 /// A random point inside the convex hull: a random convex combination of four fiducials.
 Eigen::Vector3d random_inside(Random& rng, const Points3& fiducials) {

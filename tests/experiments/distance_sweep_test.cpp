@@ -13,7 +13,7 @@ namespace vrreg::experiments {
 namespace {
 
 constexpr double kQ = 0.1;  // [1/m]
-const Eigen::Vector3d kCentre(0.5, 0.2, 0.3);
+const Eigen::Vector3d kSweepCentre(0.5, 0.2, 0.3);
 
 MeasurementSet quadratic_cell() {
   MeasurementSet set;
@@ -21,8 +21,8 @@ MeasurementSet quadratic_cell() {
   Location target;
   target.point = "T";
   target.role = Role::kTarget;
-  target.robot_m = kCentre;
-  target.sensor_m = kCentre;
+  target.robot_m = kSweepCentre;
+  target.sensor_m = kSweepCentre;
   target.source_line = 1;
   set.locations.push_back(target);
   for (const double a : {0.040, 0.020}) {
@@ -31,7 +31,7 @@ MeasurementSet quadratic_cell() {
           0.5 * a * Eigen::Vector3d(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
       Location f;
       f.point = "F" + std::to_string(set.locations.size());
-      f.robot_m = kCentre + o;
+      f.robot_m = kSweepCentre + o;
       f.sensor_m = f.robot_m + kQ * o.squaredNorm() * Eigen::Vector3d::UnitZ();
       f.source_line = set.locations.size() + 1;
       set.locations.push_back(f);

@@ -15,7 +15,7 @@ namespace {
 constexpr double kH = 0.050;        // grid spacing and octuplet edge [m]
 constexpr double kDelta = 1e-3;     // scale error of the sensor readings
 constexpr double kSigma = 0.05e-3;  // per-axis noise of the repeat readings [m]
-const Eigen::Vector3d kCentre(0.4, -0.1, 0.3);
+const Eigen::Vector3d kCellCentre(0.4, -0.1, 0.3);
 
 Location location(const std::string& name, Role role, const Eigen::Vector3d& robot,
                   const Eigen::Vector3d& sensor) {
@@ -36,16 +36,16 @@ MeasurementSet hand_cell() {
   for (int i = -1; i <= 1; ++i) {
     for (int j = -1; j <= 1; ++j) {
       for (int k = -1; k <= 1; ++k) {
-        const Eigen::Vector3d y = kCentre + kH * Eigen::Vector3d(i, j, k);
+        const Eigen::Vector3d y = kCellCentre + kH * Eigen::Vector3d(i, j, k);
         set.locations.push_back(location("F" + std::to_string(set.locations.size()),
-                                         Role::kFiducial, y, y + kDelta * (y - kCentre)));
+                                         Role::kFiducial, y, y + kDelta * (y - kCellCentre)));
       }
     }
   }
   for (int t = 0; t < 8; ++t) {
     const Eigen::Vector3d o =
         0.5 * kH * Eigen::Vector3d(t & 1 ? 1 : -1, t & 2 ? 1 : -1, t & 4 ? 1 : -1);
-    const Eigen::Vector3d y = kCentre + o;
+    const Eigen::Vector3d y = kCellCentre + o;
     const Eigen::Vector3d error =
         t < 7 ? Eigen::Vector3d(kDelta * o) : Eigen::Vector3d(-kDelta * o);
     set.locations.push_back(location("T" + std::to_string(t), Role::kTarget, y, y + error));

@@ -18,17 +18,12 @@ namespace vrreg::io {
 namespace {
 
 namespace fs = std::filesystem;
+using vrreg::testing::directory_entries;
 using vrreg::testing::is_root;
 using vrreg::testing::read_text;
 using vrreg::testing::run_as_nobody;
 using vrreg::testing::TempDir;
 using vrreg::testing::throws_file_error;
-
-std::size_t entries(const fs::path& dir) {
-  std::size_t n = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++n;
-  return n;
-}
 
 mode_t mode_of(const std::string& path) {
   struct stat st {};
@@ -43,7 +38,7 @@ TEST(AtomicWriteTargets, FifoIsRefusedAndKept) {
   EXPECT_TRUE(throws_file_error([&] { write_file_atomically(path, "x"); }, path, 0,
                                 "is a FIFO, not a regular file"));
   EXPECT_TRUE(fs::is_fifo(path));
-  EXPECT_EQ(entries(dir.path()), 1u);
+  EXPECT_EQ(directory_entries(dir.path()), 1u);
 }
 
 TEST(AtomicWriteTargets, DeviceIsRefusedAndKept) {
@@ -54,7 +49,7 @@ TEST(AtomicWriteTargets, DeviceIsRefusedAndKept) {
   EXPECT_TRUE(throws_file_error([&] { write_file_atomically(path, "x"); }, path, 0,
                                 "is a device, not a regular file"));
   EXPECT_TRUE(fs::is_character_file(path));
-  EXPECT_EQ(entries(dir.path()), 1u);
+  EXPECT_EQ(directory_entries(dir.path()), 1u);
 }
 
 TEST(AtomicWriteTargets, SymlinkIsWrittenThroughAndStays) {
@@ -66,7 +61,7 @@ TEST(AtomicWriteTargets, SymlinkIsWrittenThroughAndStays) {
   write_file_atomically(link, "new");
   EXPECT_TRUE(fs::is_symlink(link));
   EXPECT_EQ(read_text(target), "new");
-  EXPECT_EQ(entries(dir.path() / "real"), 1u);
+  EXPECT_EQ(directory_entries(dir.path() / "real"), 1u);
 }
 
 TEST(AtomicWriteTargets, DanglingSymlinkCreatesItsTarget) {
@@ -97,7 +92,7 @@ TEST(AtomicWriteTargets, ReadOnlyFileIsRefused) {
   EXPECT_TRUE(
       throws_file_error([&] { write_file_atomically(path, "x"); }, path, 0, "is read-only"));
   EXPECT_EQ(read_text(path), "keep");
-  EXPECT_EQ(entries(dir.path()), 1u);
+  EXPECT_EQ(directory_entries(dir.path()), 1u);
 }
 
 TEST(AtomicWriteTargets, AsAUserReadOnlyIsRefusedAndModeKept) {
@@ -130,7 +125,7 @@ TEST(AtomicWriteTargets, AsAUserReadOnlyIsRefusedAndModeKept) {
   struct stat st {};
   ASSERT_EQ(::stat(mine.c_str(), &st), 0);
   EXPECT_EQ(st.st_uid, vrreg::testing::kNobody);
-  EXPECT_EQ(entries(dir.path()), 2u);
+  EXPECT_EQ(directory_entries(dir.path()), 2u);
 }
 
 TEST(AtomicWriteTargets, OwnerIsKeptAsRoot) {
@@ -150,7 +145,7 @@ TEST(AtomicWriteTargets, LongestLegalNameWorks) {
   const std::string path = dir.file(std::string(255, 'n'));
   write_file_atomically(path, "long");
   EXPECT_EQ(read_text(path), "long");
-  EXPECT_EQ(entries(dir.path()), 1u);
+  EXPECT_EQ(directory_entries(dir.path()), 1u);
 }
 
 TEST(AtomicWriteTargets, EmptyPathIsRefused) {

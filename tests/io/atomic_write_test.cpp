@@ -12,22 +12,17 @@
 namespace vrreg::io {
 namespace {
 
+using vrreg::testing::directory_entries;
 using vrreg::testing::read_text;
 using vrreg::testing::TempDir;
 using vrreg::testing::throws_file_error;
-
-std::size_t entries(const std::filesystem::path& dir) {
-  std::size_t n = 0;
-  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++n;
-  return n;
-}
 
 TEST(AtomicWrite, WritesContentAndLeavesNoTemporaryFile) {
   TempDir dir;
   const std::string path = dir.file("out.txt");
   write_file_atomically(path, "hello\n");
   EXPECT_EQ(read_text(path), "hello\n");
-  EXPECT_EQ(entries(dir.path()), 1u);
+  EXPECT_EQ(directory_entries(dir.path()), 1u);
 }
 
 TEST(AtomicWrite, ReplacesAnExistingFileWhole) {
@@ -35,7 +30,7 @@ TEST(AtomicWrite, ReplacesAnExistingFileWhole) {
   const std::string path = dir.write("out.txt", std::string(100000, 'x'));
   write_file_atomically(path, "short");
   EXPECT_EQ(read_text(path), "short");
-  EXPECT_EQ(entries(dir.path()), 1u);
+  EXPECT_EQ(directory_entries(dir.path()), 1u);
 }
 
 TEST(AtomicWrite, WritesLargeAndEmptyContent) {
@@ -52,7 +47,7 @@ TEST(AtomicWrite, MissingDirectoryThrowsAndLeavesNothing) {
   const std::string path = dir.file("no/such/dir/out.txt");
   EXPECT_TRUE(throws_file_error([&] { write_file_atomically(path, "x"); }, path, 0,
                                 "cannot create a temporary file"));
-  EXPECT_EQ(entries(dir.path()), 0u);
+  EXPECT_EQ(directory_entries(dir.path()), 0u);
 }
 
 TEST(AtomicWrite, DirectoryAsTargetThrowsAndKeepsIt) {
@@ -62,7 +57,7 @@ TEST(AtomicWrite, DirectoryAsTargetThrowsAndKeepsIt) {
   EXPECT_TRUE(
       throws_file_error([&] { write_file_atomically(path, "x"); }, path, 0, "is a directory"));
   EXPECT_TRUE(std::filesystem::is_directory(path));
-  EXPECT_EQ(entries(dir.path()), 1u);
+  EXPECT_EQ(directory_entries(dir.path()), 1u);
 }
 
 TEST(AtomicWrite, ParentThatIsAFileThrowsAndLeavesItAlone) {
@@ -71,7 +66,7 @@ TEST(AtomicWrite, ParentThatIsAFileThrowsAndLeavesItAlone) {
   const std::string path = parent + "/out.txt";
   EXPECT_THROW(write_file_atomically(path, "x"), FileError);
   EXPECT_EQ(read_text(parent), "keep");
-  EXPECT_EQ(entries(dir.path()), 1u);
+  EXPECT_EQ(directory_entries(dir.path()), 1u);
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ namespace {
 using vrreg::testing::TempDir;
 using vrreg::testing::throws_file_error;
 
-const std::string kHeader =
+const std::string kBadInputHeader =
     "point,role,robot_x_mm,robot_y_mm,robot_z_mm,sensor_x_mm,sensor_y_mm,sensor_z_mm\n";
 const std::string kRow = "P1,fiducial,1,2,3,4,5,6\n";
 
@@ -35,9 +35,9 @@ TEST_F(BadCsv, EmptyFile) { EXPECT_TRUE(fails("", 0, "empty file")); }
 TEST_F(BadCsv, OnlyCommentsAndBlankLines) {
   EXPECT_TRUE(fails("# a comment\n\n   \n", 0, "no header line"));
 }
-TEST_F(BadCsv, HeaderOnly) { EXPECT_TRUE(fails("# c\n" + kHeader, 2, "no data rows")); }
+TEST_F(BadCsv, HeaderOnly) { EXPECT_TRUE(fails("# c\n" + kBadInputHeader, 2, "no data rows")); }
 TEST_F(BadCsv, HeaderOnlyWithTrailingComments) {
-  EXPECT_TRUE(fails(kHeader + "# nothing\n\n", 1, "no data rows"));
+  EXPECT_TRUE(fails(kBadInputHeader + "# nothing\n\n", 1, "no data rows"));
 }
 TEST_F(BadCsv, MissingColumn) {
   EXPECT_TRUE(fails("point,role,robot_x_mm,robot_y_mm,robot_z_mm,sensor_x_mm,sensor_y_mm\n" +
@@ -97,59 +97,65 @@ TEST_F(BadCsv, MixedLengthUnits) {
             1, "mixed length units: column 'sensor_x_m' uses _m but column 'robot_x_mm'"));
 }
 TEST_F(BadCsv, MixedJointUnits) {
-  EXPECT_TRUE(fails(kHeader.substr(0, kHeader.size() - 1) + ",q1_rad,q2_deg\n", 1,
+  EXPECT_TRUE(fails(kBadInputHeader.substr(0, kBadInputHeader.size() - 1) + ",q1_rad,q2_deg\n", 1,
                     "mixed angle units: column 'q2_deg'"));
 }
 TEST_F(BadCsv, UnknownJointUnit) {
-  EXPECT_TRUE(fails(kHeader.substr(0, kHeader.size() - 1) + ",q1_grad\n", 1,
+  EXPECT_TRUE(fails(kBadInputHeader.substr(0, kBadInputHeader.size() - 1) + ",q1_grad\n", 1,
                     "column 'q1_grad': unknown unit suffix '_grad'"));
 }
 TEST_F(BadCsv, JointColumnsWithGap) {
-  EXPECT_TRUE(fails(kHeader.substr(0, kHeader.size() - 1) + ",q1_rad,q3_rad\n", 1,
+  EXPECT_TRUE(fails(kBadInputHeader.substr(0, kBadInputHeader.size() - 1) + ",q1_rad,q3_rad\n", 1,
                     "missing column 'q2_rad'"));
 }
 TEST_F(BadCsv, JointColumnZero) {
-  EXPECT_TRUE(fails(kHeader.substr(0, kHeader.size() - 1) + ",q0_rad\n", 1, "column 'q0_rad'"));
+  EXPECT_TRUE(fails(kBadInputHeader.substr(0, kBadInputHeader.size() - 1) + ",q0_rad\n", 1,
+                    "column 'q0_rad'"));
 }
 TEST_F(BadCsv, EmptyColumnName) {
-  EXPECT_TRUE(fails(kHeader.substr(0, kHeader.size() - 1) + ",\n", 1, "empty column name"));
+  EXPECT_TRUE(
+      fails(kBadInputHeader.substr(0, kBadInputHeader.size() - 1) + ",\n", 1, "empty column name"));
 }
 TEST_F(BadCsv, NanValue) {
-  EXPECT_TRUE(fails(kHeader + kRow + "P2,fiducial,1,2,nan,4,5,6\n", 3,
+  EXPECT_TRUE(fails(kBadInputHeader + kRow + "P2,fiducial,1,2,nan,4,5,6\n", 3,
                     "column 'robot_z_mm': 'nan' is not a finite number"));
 }
 TEST_F(BadCsv, InfValue) {
-  EXPECT_TRUE(fails(kHeader + "P2,fiducial,1,2,3,-inf,5,6\n", 2, "'-inf' is not a finite number"));
+  EXPECT_TRUE(
+      fails(kBadInputHeader + "P2,fiducial,1,2,3,-inf,5,6\n", 2, "'-inf' is not a finite number"));
 }
 TEST_F(BadCsv, OverflowingValue) {
-  EXPECT_TRUE(fails(kHeader + "P2,fiducial,1,2,3,1e400,5,6\n", 2, "'1e400' is not a finite"));
+  EXPECT_TRUE(
+      fails(kBadInputHeader + "P2,fiducial,1,2,3,1e400,5,6\n", 2, "'1e400' is not a finite"));
 }
 TEST_F(BadCsv, NonNumericValue) {
-  EXPECT_TRUE(fails(kHeader + "P2,fiducial,1,2,3,4,abc,6\n", 2,
+  EXPECT_TRUE(fails(kBadInputHeader + "P2,fiducial,1,2,3,4,abc,6\n", 2,
                     "column 'sensor_y_mm': 'abc' is not a finite number"));
 }
 TEST_F(BadCsv, TrailingGarbageAfterNumber) {
-  EXPECT_TRUE(fails(kHeader + "P2,fiducial,1,2,3,4,5,6.0mm\n", 2, "'6.0mm' is not a finite"));
+  EXPECT_TRUE(
+      fails(kBadInputHeader + "P2,fiducial,1,2,3,4,5,6.0mm\n", 2, "'6.0mm' is not a finite"));
 }
 TEST_F(BadCsv, EmptyValue) {
-  EXPECT_TRUE(fails(kHeader + "P2,fiducial,1,,3,4,5,6\n", 2, "column 'robot_y_mm': empty value"));
+  EXPECT_TRUE(
+      fails(kBadInputHeader + "P2,fiducial,1,,3,4,5,6\n", 2, "column 'robot_y_mm': empty value"));
 }
 TEST_F(BadCsv, ShortRow) {
-  EXPECT_TRUE(fails(kHeader + kRow + "P2,fiducial,1,2,3,4,5\n", 3,
+  EXPECT_TRUE(fails(kBadInputHeader + kRow + "P2,fiducial,1,2,3,4,5\n", 3,
                     "short row: 7 fields, the header has 8"));
 }
 TEST_F(BadCsv, LongRow) {
-  EXPECT_TRUE(fails(kHeader + "P2,fiducial,1,2,3,4,5,6,7\n", 2, "long row: 9 fields"));
+  EXPECT_TRUE(fails(kBadInputHeader + "P2,fiducial,1,2,3,4,5,6,7\n", 2, "long row: 9 fields"));
 }
 TEST_F(BadCsv, EmptyPointLabel) {
-  EXPECT_TRUE(fails(kHeader + " ,fiducial,1,2,3,4,5,6\n", 2, "empty point label"));
+  EXPECT_TRUE(fails(kBadInputHeader + " ,fiducial,1,2,3,4,5,6\n", 2, "empty point label"));
 }
 TEST_F(BadCsv, UnknownRole) {
-  EXPECT_TRUE(fails(kHeader + "P1,fiducal,1,2,3,4,5,6\n", 2,
+  EXPECT_TRUE(fails(kBadInputHeader + "P1,fiducal,1,2,3,4,5,6\n", 2,
                     "unknown role 'fiducal' (expected fiducial or target)"));
 }
 TEST_F(BadCsv, AbbreviatedRoleIsNotAccepted) {
-  EXPECT_TRUE(fails(kHeader + "P1,f,1,2,3,4,5,6\n", 2, "unknown role 'f'"));
+  EXPECT_TRUE(fails(kBadInputHeader + "P1,f,1,2,3,4,5,6\n", 2, "unknown role 'f'"));
 }
 TEST_F(BadCsv, NonIntegerConfig) {
   EXPECT_TRUE(
@@ -158,20 +164,21 @@ TEST_F(BadCsv, NonIntegerConfig) {
             2, "column 'config': '1.5' is not an integer"));
 }
 TEST_F(BadCsv, NegativeRepeat) {
-  EXPECT_TRUE(fails(kHeader.substr(0, kHeader.size() - 1) + ",repeat\nP1,fiducial,1,2,3,4,5,6,-1\n",
+  EXPECT_TRUE(fails(kBadInputHeader.substr(0, kBadInputHeader.size() - 1) +
+                        ",repeat\nP1,fiducial,1,2,3,4,5,6,-1\n",
                     2, "negative repeat"));
 }
 TEST_F(BadCsv, QuotedFieldIsRejected) {
-  EXPECT_TRUE(
-      fails(kHeader + "\"P1\",fiducial,1,2,3,4,5,6\n", 2, "quoted fields are not supported"));
+  EXPECT_TRUE(fails(kBadInputHeader + "\"P1\",fiducial,1,2,3,4,5,6\n", 2,
+                    "quoted fields are not supported"));
 }
 TEST_F(BadCsv, SamePointWithConflictingRole) {
-  EXPECT_TRUE(fails(kHeader + kRow + "P2,target,0,0,0,0,0,0\nP1,target,1,2,3,4,5,6\n", 4,
+  EXPECT_TRUE(fails(kBadInputHeader + kRow + "P2,target,0,0,0,0,0,0\nP1,target,1,2,3,4,5,6\n", 4,
                     "point 'P1' has role target here but fiducial on line 2"));
 }
 TEST_F(BadCsv, SamePointWithConflictingRobotCoordinates) {
   EXPECT_TRUE(
-      fails(kHeader + kRow + "P1,fiducial,1,2,3.001,4,5,6\n", 3,
+      fails(kBadInputHeader + kRow + "P1,fiducial,1,2,3.001,4,5,6\n", 3,
             "point 'P1' has robot position (1, 2, 3.001) mm here but (1, 2, 3) mm on line 2"));
 }
 TEST_F(BadCsv, ConflictAcrossConfigsOfOnePoint) {
@@ -181,7 +188,8 @@ TEST_F(BadCsv, ConflictAcrossConfigsOfOnePoint) {
             3, "on line 2"));
 }
 TEST_F(BadCsv, SameLocationWithConflictingJoints) {
-  const std::string header = kHeader.substr(0, kHeader.size() - 1) + ",config,q1_rad,q2_rad\n";
+  const std::string header =
+      kBadInputHeader.substr(0, kBadInputHeader.size() - 1) + ",config,q1_rad,q2_rad\n";
   EXPECT_TRUE(
       fails(header + "P1,fiducial,1,2,3,4,5,6,0,0.1,0.2\nP1,fiducial,1,2,3,4,5,6,0,0.1,0.3\n", 3,
             "point 'P1' config 0 has q2 = 0.3 rad here but 0.2 rad on line 2"));
@@ -189,10 +197,10 @@ TEST_F(BadCsv, SameLocationWithConflictingJoints) {
 TEST_F(BadCsv, NulBytes) {
   std::string row = kRow;
   row[4] = '\0';
-  EXPECT_TRUE(fails(kHeader + row, 2, "NUL byte at column 5"));
+  EXPECT_TRUE(fails(kBadInputHeader + row, 2, "NUL byte at column 5"));
 }
 TEST_F(BadCsv, InvalidUtf8) {
-  EXPECT_TRUE(fails(kHeader + "P\xff,fiducial,1,2,3,4,5,6\n", 2, "invalid UTF-8"));
+  EXPECT_TRUE(fails(kBadInputHeader + "P\xff,fiducial,1,2,3,4,5,6\n", 2, "invalid UTF-8"));
 }
 TEST_F(BadCsv, RandomBinaryGarbage) {
   Random rng(2024);
@@ -206,13 +214,13 @@ TEST_F(BadCsv, RandomBinaryGarbage) {
 TEST_F(BadCsv, TwoMegabyteLineFailsFastWithBoundedMemory) {
   const std::string line(2 * 1024 * 1024, '7');
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_TRUE(fails(kHeader + kRow + line + "\n", 3, "line longer than 1048576 bytes"));
+  EXPECT_TRUE(fails(kBadInputHeader + kRow + line + "\n", 3, "line longer than 1048576 bytes"));
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
 }
 TEST_F(BadCsv, HeaderLongerThanConfiguredLimit) {
   CsvReadOptions options;
   options.max_line_bytes = 40;
-  EXPECT_TRUE(fails(kHeader + kRow, 1, "line longer than 40 bytes", options));
+  EXPECT_TRUE(fails(kBadInputHeader + kRow, 1, "line longer than 40 bytes", options));
 }
 TEST_F(BadCsv, FileThatCannotBeOpened) {
   const std::string path = dir_.file("does_not_exist.csv");

@@ -17,7 +17,7 @@ namespace {
 
 using vrreg::testing::TempDir;
 
-MeasurementSet parse(const std::string& text, const CsvReadOptions& options = {}) {
+MeasurementSet parse_round_trip(const std::string& text, const CsvReadOptions& options = {}) {
   std::istringstream in(text);
   return parse_measurement_csv(in, "round-trip", options);
 }
@@ -51,7 +51,7 @@ TEST(WriteCsv, RoundTripGivesTheSameAverages) {
   Random rng(5);
   const int k = 12;
   const std::vector<Reading> readings = simulated_readings(rng, 10, k);
-  const MeasurementSet set = parse(format_measurement_csv(readings, {"seed 5", "UR5"}));
+  const MeasurementSet set = parse_round_trip(format_measurement_csv(readings, {"seed 5", "UR5"}));
   ASSERT_EQ(set.locations.size(), 20u);
   EXPECT_EQ(set.n_joints, 3);
   EXPECT_TRUE(set.has_config);
@@ -88,7 +88,7 @@ TEST(WriteCsv, SingleValuesRoundTripToTheUlp) {
     r.sensor_m = Eigen::Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-2, 2));
     readings.push_back(r);
   }
-  const MeasurementSet set = parse(format_measurement_csv(readings));
+  const MeasurementSet set = parse_round_trip(format_measurement_csv(readings));
   ASSERT_EQ(set.locations.size(), readings.size());
   for (std::size_t i = 0; i < readings.size(); ++i) {
     for (int a = 0; a < 3; ++a) {
@@ -121,7 +121,7 @@ TEST(WriteCsv, SensorOnlyReadingsHaveNoRobotColumns) {
   EXPECT_EQ(text.find("robot_"), std::string::npos);
   CsvReadOptions options;
   options.require_robot = false;
-  const MeasurementSet set = parse(text, options);
+  const MeasurementSet set = parse_round_trip(text, options);
   EXPECT_FALSE(set.locations[0].has_robot);
 }
 

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 
 namespace vrreg::kinematics {
 namespace {
@@ -99,7 +100,7 @@ TEST(Strategy2Relabelling, LinfAndL2PickDifferentReferences) {
 }
 
 TEST(Strategy2Relabelling, AnglesAreWrapped) {
-  constexpr double kPi = std::numbers::pi;
+  using units::kPi;
   PointConfigurations p0;
   p0.labels = {1, 2};
   p0.q_rad.resize(1, 2);

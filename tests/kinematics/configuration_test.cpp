@@ -5,6 +5,7 @@
 #include <set>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/configuration_label.hpp"
 #include "vrreg/kinematics/inverse_kinematics.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
@@ -14,7 +15,7 @@
 namespace vrreg::kinematics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using units::kPi;
 
 TEST(ConfigurationLabel, StringsAndIndicesAreStableAndRoundTrip) {
   EXPECT_EQ(ConfigurationLabel::ur(true, true, false).to_string(),

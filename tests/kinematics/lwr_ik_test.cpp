@@ -7,6 +7,7 @@
 
 #include "kinematics_test_support.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
 #include "vrreg/kinematics/robots.hpp"
@@ -15,10 +16,10 @@
 namespace vrreg::kinematics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using testing::pose_error;
 using testing::pose_from;
 using testing::random_joints;
+using units::kPi;
 
 bool generic(const JointVector& q) {
   return std::abs(std::sin(q(1))) > 1e-3 && std::abs(std::sin(q(3))) > 1e-3 &&

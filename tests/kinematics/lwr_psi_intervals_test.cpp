@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "kinematics_test_support.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/lwr_ik.hpp"
 #include "vrreg/kinematics/robots.hpp"
@@ -14,7 +15,7 @@
 namespace vrreg::kinematics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using units::kPi;
 
 bool inside(const std::vector<PsiInterval>& list, double psi, double margin) {
   for (const PsiInterval& i : list) {

@@ -7,13 +7,14 @@
 #include <numbers>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/pose.hpp"
 #include "vrreg/kinematics/robots.hpp"
 
 namespace vrreg::kinematics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using units::kPi;
 
 TEST(SerialChain, BuiltinRobotsHaveTheirFamilies) {
   for (const char* name : {"ur3", "ur5", "ur10", "ur5e"}) {

@@ -8,6 +8,7 @@
 
 #include "kinematics_test_support.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/robots.hpp"
 #include "vrreg_test.hpp"
@@ -15,10 +16,10 @@
 namespace vrreg::kinematics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using testing::pose_error;
 using testing::pose_from;
 using testing::random_joints;
+using units::kPi;
 
 // Away from the singular sets by `margin`: wrist (sin q5), elbow (sin q3), shoulder (reach h).
 bool generic(const SerialChain& chain, const JointVector& q, double margin = 1e-3) {

@@ -5,15 +5,16 @@
 #include <numbers>
 
 #include "io_test_helpers.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/robots.hpp"
 
 namespace vrreg::io {
 namespace {
 
+using units::kPi;
 using vrreg::testing::TempDir;
 using vrreg::testing::throws_file_error;
-constexpr double kPi = std::numbers::pi;
 
 const char* kUr5Yaml = R"(# UR5 with a calibrated joint-2 offset and a sphere on the flange
 name: ur5-cell

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/robots.hpp"
 #include "vrreg/simulation/gravity_compliance.hpp"
@@ -15,7 +16,7 @@
 namespace vrreg::simulation {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using units::kPi;
 
 kinematics::JointVector some_joints() {
   kinematics::JointVector q(6);

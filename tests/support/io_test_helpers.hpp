@@ -75,4 +75,11 @@ inline ::testing::AssertionResult throws_file_error(const std::function<void()>&
   return ::testing::AssertionFailure() << "did not throw";
 }
 
+/// Number of entries in a directory: a write that left a temporary file behind shows up here.
+inline std::size_t directory_entries(const std::filesystem::path& dir) {
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++n;
+  return n;
+}
+
 }  // namespace vrreg::testing

@@ -4,6 +4,8 @@
 
 namespace vrreg::units {
 
+inline constexpr double kPi = std::numbers::pi;
+
 inline constexpr double kMetresPerMillimetre = 1e-3;
 inline constexpr double kMillimetresPerMetre = 1e3;
 inline constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
