@@ -26,6 +26,7 @@ struct RegisterArgs {
   StrategyFlags strategy;
   std::string output;
   bool json = false;
+  bool exact_sigma_l = false;
 };
 
 void run_register_unchecked(const RegisterArgs& args);
@@ -44,6 +45,7 @@ RegisterOptions register_options(const RegisterArgs& args) {
   if (args.sigma_rep_mm) options.sigma_rep_m = units::mm_to_m(*args.sigma_rep_mm);
   options.interpolation = args.interpolation.settings();
   options.procedure2 = register_procedure2(args.strategy);
+  options.sigma_l.force_exact = args.exact_sigma_l;
   return options;
 }
 
@@ -78,6 +80,15 @@ void run_register_unchecked(const RegisterArgs& args) {
     j["sigma_l_mm"] = units::m_to_mm(rb.sigma_l_m);
     j["mean_l_mm"] = units::m_to_mm(rb.mean_m);
     j["pairs"] = rb.pairs;
+    if (result.sigma_l_sampling.sampled) {
+      const SigmaLSampling& s = result.sigma_l_sampling;
+      j["sigma_l_sampling"] = {
+          {"pairs", s.pairs_sampled},
+          {"pairs_total", s.pairs_total},
+          {"seed", s.seed},
+          {"confidence", s.confidence},
+          {"interval_mm", {units::m_to_mm(s.sigma_l_low_m), units::m_to_mm(s.sigma_l_high_m)}}};
+    }
     j["spread_mm"] = json_mm3(reg.spread_m);
     if (sigma_opt) j["sigma_opt_mm"] = units::m_to_mm(*sigma_opt);
     if (args.sigma_rep_mm) j["sigma_rep_mm"] = *args.sigma_rep_mm;
@@ -101,8 +112,18 @@ void run_register_unchecked(const RegisterArgs& args) {
   std::printf(
       "  FRE                           %s mm  (fit residual, not target accuracy: run evaluate)\n",
       format_mm(reg.fre_m).c_str());
-  std::printf("  sigma_L                       %s mm  (rigid-body condition over %lld pairs)\n",
-              format_mm(rb.sigma_l_m).c_str(), static_cast<long long>(rb.pairs));
+  if (result.sigma_l_sampling.sampled) {
+    const SigmaLSampling& s = result.sigma_l_sampling;
+    std::printf(
+        "  sigma_L                       %s mm  (SAMPLED: %lld of %lld pairs, seed %llu; 95%% "
+        "interval %s to %s mm; --exact-sigma-l for all pairs)\n",
+        format_mm(rb.sigma_l_m).c_str(), static_cast<long long>(s.pairs_sampled),
+        static_cast<long long>(s.pairs_total), static_cast<unsigned long long>(s.seed),
+        format_mm(s.sigma_l_low_m, 5).c_str(), format_mm(s.sigma_l_high_m, 5).c_str());
+  } else {
+    std::printf("  sigma_L                       %s mm  (rigid-body condition over %lld pairs)\n",
+                format_mm(rb.sigma_l_m).c_str(), static_cast<long long>(rb.pairs));
+  }
   if (sigma_opt) {
     std::printf("  sigma_opt                     %s mm  (per axis, from repeat readings)\n",
                 format_mm(*sigma_opt).c_str());
@@ -148,6 +169,9 @@ void add_register_command(CLI::App& app) {
   args->strategy.add_to(*cmd, true);
   add_output_option(*cmd, "-o,--output", args->output, "write the model (JSON) here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
+  cmd->add_flag("--exact-sigma-l", args->exact_sigma_l,
+                "sigma_L over all pairs even above 20000 fiducials (quadratic time; by default "
+                "larger sets use 10^7 sampled pairs and say so)");
   cmd->callback([args] { run_register(*args); });
 }
 

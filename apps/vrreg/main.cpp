@@ -6,6 +6,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <string>
 
 #include "command_registry.hpp"
 #include "vrreg/core/check.hpp"
@@ -37,7 +38,15 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // One line (CLI11's own adds a second): what was wrong, and where help is.
+    std::string message = e.what();
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    std::string help = "vrreg --help";
+    for (const CLI::App* command : app.get_subcommands())
+      help = "vrreg " + command->get_name() + " --help";
+    std::cerr << "vrreg: usage error: " << message << " (see " << help << ")\n";
+    return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << "vrreg: error: out of memory\n";
     return 1;

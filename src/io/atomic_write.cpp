@@ -116,6 +116,11 @@ class TemporaryFile {
   }
 
   void write_all(const std::string& content) {
+    write_piece(content);
+    finish();
+  }
+
+  void write_piece(const std::string& content) {
     std::size_t done = 0;
     while (done < content.size()) {
       const ssize_t n = ::write(fd_, content.data() + done, content.size() - done);
@@ -125,6 +130,9 @@ class TemporaryFile {
       }
       done += static_cast<std::size_t>(n);
     }
+  }
+
+  void finish() {
     if (::fsync(fd_) != 0) fail("cannot flush to disk");
     const int fd = fd_;
     fd_ = -1;
@@ -163,12 +171,33 @@ class TemporaryFile {
 
 }  // namespace
 
+void check_output_replaceable(const std::string& path) {
+  (void)replaceable_target(path, follow_symlinks(path));
+}
+
 void write_file_atomically(const std::string& path, const std::string& content) {
   if (path.empty()) throw FileError("(empty path)", 0, "no output file name");
   const fs::path target = follow_symlinks(path);
   const std::optional<struct stat> existing = replaceable_target(path, target);
   TemporaryFile file(path, target, existing);
   file.write_all(content);
+  file.commit();
+}
+
+void write_file_atomically_in_pieces(const std::string& path,
+                                     const std::function<bool(std::string&)>& next_piece) {
+  if (path.empty()) throw FileError("(empty path)", 0, "no output file name");
+  const fs::path target = follow_symlinks(path);
+  const std::optional<struct stat> existing = replaceable_target(path, target);
+  TemporaryFile file(path, target, existing);
+  std::string piece;
+  bool more = true;
+  while (more) {
+    piece.clear();
+    more = next_piece(piece);
+    file.write_piece(piece);
+  }
+  file.finish();
   file.commit();
 }
 

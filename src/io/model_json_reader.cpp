@@ -124,6 +124,37 @@ planning::Procedure2 read_procedure2(const json& doc, const detail::JsonFields& 
   return p;
 }
 
+// sigma_l_sampling: how a sampled sigma_L was estimated (model_json.hpp).
+SigmaLSampling read_sampling(const json& doc, const detail::JsonFields& f) {
+  const json& s = f.member(doc, "", "sigma_l_sampling");
+  f.require_object(s, "sigma_l_sampling");
+  const auto count = [&](const char* key) {
+    const double v = f.number(s, "sigma_l_sampling", key);
+    if (v < 2.0 || v > 9e15 || v != std::floor(v)) {
+      f.fail(detail::join_path("sigma_l_sampling", key), "must be a whole number >= 2");
+    }
+    return static_cast<std::int64_t>(v);
+  };
+  SigmaLSampling out;
+  out.sampled = true;
+  out.pairs_sampled = count("pairs");
+  out.pairs_total = count("pairs_total");
+  const json& seed = f.member(s, "sigma_l_sampling", "seed");
+  if (!seed.is_number_unsigned()) f.fail("sigma_l_sampling.seed", "must be a whole number >= 0");
+  out.seed = seed.get<std::uint64_t>();
+  out.confidence = f.number(s, "sigma_l_sampling", "confidence");
+  if (!(out.confidence > 0.0 && out.confidence < 1.0)) {
+    f.fail("sigma_l_sampling.confidence", "must be in (0, 1)");
+  }
+  const std::vector<double> interval = f.numbers(s, "sigma_l_sampling", "interval_mm", 2);
+  if (interval[0] < 0.0 || interval[1] < interval[0]) {
+    f.fail("sigma_l_sampling.interval_mm", "must be [low, high] with 0 <= low <= high");
+  }
+  out.sigma_l_low_m = interval[0] / kMmPerM;
+  out.sigma_l_high_m = interval[1] / kMmPerM;
+  return out;
+}
+
 }  // namespace
 
 RegistrationModel parse_model_json(const std::string& text, const std::string& source) {
@@ -139,6 +170,7 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
   model.sigma_l_m = f.number(doc, "", "sigma_l_mm") / kMmPerM;
   if (model.fre_m < 0.0) f.fail("fre_mm", "negative");
   if (model.sigma_l_m < 0.0) f.fail("sigma_l_mm", "negative");
+  if (doc.contains("sigma_l_sampling")) model.sigma_l_sampling = read_sampling(doc, f);
   model.config = f.optional_integer(doc, "", "config");
   if (doc.contains("sigma_rep_mm")) {
     model.sigma_rep_m = f.number(doc, "", "sigma_rep_mm") / kMmPerM;

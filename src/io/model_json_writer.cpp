@@ -53,6 +53,17 @@ ordered_json fiducial_json(const Location& f, const Eigen::Vector3d& correction_
   return out;
 }
 
+// Present only when sigma_L was estimated from a sample of pairs (absent: all pairs).
+ordered_json sampling_json(const SigmaLSampling& s) {
+  return {{"pairs", s.pairs_sampled},
+          {"pairs_total", s.pairs_total},
+          {"seed", s.seed},
+          {"confidence", finite(s.confidence, "sigma_l_sampling.confidence")},
+          {"interval_mm",
+           {finite(units::m_to_mm(s.sigma_l_low_m), "sigma_l_sampling.interval_mm"),
+            finite(units::m_to_mm(s.sigma_l_high_m), "sigma_l_sampling.interval_mm")}}};
+}
+
 // Procedure 2 (paper section 4.4): written only for models built with a strategy.
 ordered_json procedure2_json(const RegistrationModel& model) {
   const planning::Procedure2& p = model.procedure2;
@@ -93,6 +104,8 @@ std::string format_model_json(const RegistrationModel& model) {
   out["scale"] = finite(T.scale, "scale");
   out["fre_mm"] = finite(units::m_to_mm(model.fre_m), "fre_mm");
   out["sigma_l_mm"] = finite(units::m_to_mm(model.sigma_l_m), "sigma_l_mm");
+  if (model.sigma_l_sampling.sampled)
+    out["sigma_l_sampling"] = sampling_json(model.sigma_l_sampling);
   if (model.sigma_rep_m)
     out["sigma_rep_mm"] = finite(units::m_to_mm(*model.sigma_rep_m), "sigma_rep_mm");
   out["config"] = optional_int(model.config);

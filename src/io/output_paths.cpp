@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
 
 namespace vrreg::io {
@@ -30,6 +31,7 @@ void check_outputs_are_not_inputs(const std::vector<CommandPath>& inputs,
   for (std::size_t k = 0; k < outputs.size(); ++k) {
     const CommandPath& out = outputs[k];
     if (out.path.empty()) continue;
+    check_output_replaceable(out.path);  // a directory, FIFO or device: refused before any work
     for (const CommandPath& in : inputs) {
       if (in.path.empty() || !same_file(out.path, in.path)) continue;
       throw FileError(out.path, 0,

@@ -1,5 +1,7 @@
 #include "vrreg/io/results_csv.hpp"
 
+#include <algorithm>
+
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
@@ -23,58 +25,104 @@ void put_mm3(std::string& out, const Points3& points_m, Eigen::Index n, int sign
   }
 }
 
+constexpr const char* kPerTargetHeader =
+    "point,config,status,unc_tre_mm,cor_tre_mm,delta_tre_mm,"
+    "corrected_robot_x_mm,corrected_robot_y_mm,corrected_robot_z_mm,"
+    "correction_x_mm,correction_y_mm,correction_z_mm\n";
+
+void put_per_target_row(std::string& out, const EvaluateResult& r, std::size_t k) {
+  constexpr int kDigits = 10;
+  const auto n = static_cast<Eigen::Index>(k);
+  out += r.names[k];
+  out += ',';
+  out += config_field(r.configs[k]);
+  out += ',';
+  out += to_string(r.correction.stencils[k].status);
+  out += ',';
+  put_mm(out, r.unc_tre_m[n], kDigits);
+  out += ',';
+  put_mm(out, r.cor_tre_m[n], kDigits);
+  out += ',';
+  put_mm(out, r.cor_tre_m[n] - r.unc_tre_m[n], kDigits);
+  put_mm3(out, r.correction.corrected_robot_m, n, kDigits);
+  put_mm3(out, r.correction.corrections_sensor_m, n, kDigits);
+  out += '\n';
+}
+
+// Rows per piece written: a few hundred kB at a time, never the whole file in memory.
+constexpr std::size_t kRowsPerPiece = 4096;
+
+// Writes `header` then `rows` rows with put_row(piece, k), kRowsPerPiece rows at a time.
+template <class PutRow>
+void write_rows_in_pieces(const std::string& path, const std::string& header, std::size_t rows,
+                          PutRow put_row) {
+  std::size_t next = 0;
+  bool first = true;
+  write_file_atomically_in_pieces(path, [&](std::string& piece) {
+    if (first) piece += header;
+    first = false;
+    const std::size_t end = std::min(rows, next + kRowsPerPiece);
+    for (; next < end; ++next) put_row(piece, next);
+    return next < rows;
+  });
+}
+
 }  // namespace
 
 std::string format_per_target_csv(const EvaluateResult& r) {
-  constexpr int kDigits = 10;
-  std::string out =
-      "point,config,status,unc_tre_mm,cor_tre_mm,delta_tre_mm,"
-      "corrected_robot_x_mm,corrected_robot_y_mm,corrected_robot_z_mm,"
-      "correction_x_mm,correction_y_mm,correction_z_mm\n";
-  for (std::size_t k = 0; k < r.names.size(); ++k) {
-    const auto n = static_cast<Eigen::Index>(k);
-    out += r.names[k] + ',' + config_field(r.configs[k]) + ',' +
-           to_string(r.correction.stencils[k].status) + ',';
-    put_mm(out, r.unc_tre_m[n], kDigits);
-    out += ',';
-    put_mm(out, r.cor_tre_m[n], kDigits);
-    out += ',';
-    put_mm(out, r.cor_tre_m[n] - r.unc_tre_m[n], kDigits);
-    put_mm3(out, r.correction.corrected_robot_m, n, kDigits);
-    put_mm3(out, r.correction.corrections_sensor_m, n, kDigits);
-    out += '\n';
-  }
+  std::string out = kPerTargetHeader;
+  for (std::size_t k = 0; k < r.names.size(); ++k) put_per_target_row(out, r, k);
   return out;
 }
 
 void write_per_target_csv(const std::string& path, const EvaluateResult& result) {
-  write_file_atomically(path, format_per_target_csv(result));
+  write_rows_in_pieces(
+      path, kPerTargetHeader, result.names.size(),
+      [&](std::string& piece, std::size_t k) { put_per_target_row(piece, result, k); });
 }
+
+namespace {
+
+std::string corrected_header(const CorrectResult& r, const std::string& model_name,
+                             const std::string& points_name) {
+  const TargetCorrection& c = r.correction;
+  return "# vrreg correct: model " + model_name + ", points " + points_name + ", interpolation " +
+         to_string(c.method_used) + " (" + c.layout +
+         ")\n"
+         "point,config,status,robot_x_mm,robot_y_mm,robot_z_mm,"
+         "uncorrected_robot_x_mm,uncorrected_robot_y_mm,uncorrected_robot_z_mm,"
+         "correction_x_mm,correction_y_mm,correction_z_mm\n";
+}
+
+void put_corrected_row(std::string& out, const CorrectResult& r, std::size_t k) {
+  constexpr int kDigits = 12;
+  const TargetCorrection& c = r.correction;
+  const auto n = static_cast<Eigen::Index>(k);
+  out += r.names[k];
+  out += ',';
+  out += config_field(r.configs[k]);
+  out += ',';
+  out += to_string(c.stencils[k].status);
+  put_mm3(out, c.corrected_robot_m, n, kDigits);
+  put_mm3(out, c.uncorrected_robot_m, n, kDigits);
+  put_mm3(out, c.corrections_sensor_m, n, kDigits);
+  out += '\n';
+}
+
+}  // namespace
 
 std::string format_corrected_csv(const CorrectResult& r, const std::string& model_name,
                                  const std::string& points_name) {
-  constexpr int kDigits = 12;
-  const TargetCorrection& c = r.correction;
-  std::string out = "# vrreg correct: model " + model_name + ", points " + points_name +
-                    ", interpolation " + to_string(c.method_used) + " (" + c.layout + ")\n";
-  out +=
-      "point,config,status,robot_x_mm,robot_y_mm,robot_z_mm,"
-      "uncorrected_robot_x_mm,uncorrected_robot_y_mm,uncorrected_robot_z_mm,"
-      "correction_x_mm,correction_y_mm,correction_z_mm\n";
-  for (std::size_t k = 0; k < r.names.size(); ++k) {
-    const auto n = static_cast<Eigen::Index>(k);
-    out += r.names[k] + ',' + config_field(r.configs[k]) + ',' + to_string(c.stencils[k].status);
-    put_mm3(out, c.corrected_robot_m, n, kDigits);
-    put_mm3(out, c.uncorrected_robot_m, n, kDigits);
-    put_mm3(out, c.corrections_sensor_m, n, kDigits);
-    out += '\n';
-  }
+  std::string out = corrected_header(r, model_name, points_name);
+  for (std::size_t k = 0; k < r.names.size(); ++k) put_corrected_row(out, r, k);
   return out;
 }
 
 void write_corrected_csv(const std::string& path, const CorrectResult& result,
                          const std::string& model_name, const std::string& points_name) {
-  write_file_atomically(path, format_corrected_csv(result, model_name, points_name));
+  write_rows_in_pieces(
+      path, corrected_header(result, model_name, points_name), result.names.size(),
+      [&](std::string& piece, std::size_t k) { put_corrected_row(piece, result, k); });
 }
 
 }  // namespace vrreg::io

@@ -89,9 +89,13 @@ RegisterResult register_unchecked(const MeasurementSet& input, const RegisterOpt
   }
   out.n_registered = static_cast<std::size_t>(sensor.cols());
   if (options.rigid_body_statistics) {
-    out.rigid_body = rigid_body_statistics(sensor, robot);  // Eq. 1
+    const RigidBodyEstimate estimate =
+        rigid_body_estimate(sensor, robot, options.sigma_l);  // Eq. 1
+    out.rigid_body = estimate.statistics;
+    out.sigma_l_sampling = estimate.sampling;
   }
   out.model.sigma_l_m = out.rigid_body.sigma_l_m;
+  out.model.sigma_l_sampling = out.sigma_l_sampling;
   out.model.sigma_rep_m = options.sigma_rep_m;
   out.noise = noise_figures(sigma_opt_m(out.model.fiducials), options.sigma_rep_m,
                             out.rigid_body.sigma_l_m);  // Eq. 9
@@ -104,6 +108,7 @@ void RegisterOptions::validate() const {
   registration.validate();
   interpolation.validate();
   if (robust) robust->validate();
+  sigma_l.validate();
   VRREG_THROW_UNLESS(
       !sigma_rep_m || (std::isfinite(*sigma_rep_m) && *sigma_rep_m >= 0.0),
       "the robot repeatability must be finite and >= 0, got " << *sigma_rep_m << " m");

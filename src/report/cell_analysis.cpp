@@ -2,10 +2,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vrreg/core/check.hpp"
-#include "vrreg/report/cell_report.hpp"
 #include "charts.hpp"
+#include "vrreg/core/check.hpp"
 #include "vrreg/metrics/noise.hpp"
+#include "vrreg/report/cell_report.hpp"
 
 namespace vrreg::report {
 namespace {
@@ -34,16 +34,23 @@ CellAnalysis analyze_cell(const CellReportInput& input) {
       sensor.col(j) = model.fiducials[static_cast<std::size_t>(j)].sensor_m;
       robot.col(j) = model.fiducials[static_cast<std::size_t>(j)].robot_m;
     }
-    a.rigid_body = rigid_body_statistics(sensor, robot);
+    const SigmaLOptions sampling;  // as register: all pairs up to 20 000 fiducials, else sampled
+    const RigidBodyEstimate estimate = rigid_body_estimate(sensor, robot, sampling);
+    a.rigid_body = estimate.statistics;
+    a.sigma_l_sampling = estimate.sampling;
     // About 60 bins of a round width over the bulk of L (mean +- 5 sigma_L, within min..max).
     const double s = std::max(a.rigid_body.sigma_l_m, 1e-9);
     const double lo = std::max(a.rigid_body.min_m, a.rigid_body.mean_m - 5 * s);
     const double hi = std::min(a.rigid_body.max_m, a.rigid_body.mean_m + 5 * s);
     const Eigen::Vector2d range(lo, hi > lo ? hi : lo + 1e-6);
     const Histogram shape = charts::auto_histogram(range, 60);
-    a.l_histogram = rigid_body_histogram(
-        sensor, robot, static_cast<int>(shape.counts.size()), shape.lo_m,
-        shape.lo_m + shape.bin_width_m * static_cast<double>(shape.counts.size()));
+    const int bins = static_cast<int>(shape.counts.size());
+    const double hi_m = shape.lo_m + shape.bin_width_m * static_cast<double>(bins);
+    a.l_histogram = a.sigma_l_sampling.sampled
+                        ? rigid_body_histogram_sampled(sensor, robot, bins, shape.lo_m, hi_m,
+                                                       a.sigma_l_sampling.pairs_sampled,
+                                                       a.sigma_l_sampling.seed)
+                        : rigid_body_histogram(sensor, robot, bins, shape.lo_m, hi_m);
   }
   a.noise = noise_figures(sigma_opt_m(model.fiducials),
                           input.sigma_rep_m ? input.sigma_rep_m : model.sigma_rep_m,

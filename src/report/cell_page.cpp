@@ -15,6 +15,21 @@ std::string num(double value, int decimals) { return format_fixed(value, decimal
 std::string mm(double metres) { return format_mm(metres) + " mm"; }
 std::string opt_mm(const std::optional<double>& m) { return m ? mm(*m) : "—"; }
 
+std::string pairs_text(const CellAnalysis& a) {
+  const SigmaLSampling& s = a.sigma_l_sampling;
+  if (!s.sampled) return std::to_string(a.rigid_body.pairs);
+  return std::to_string(s.pairs_total) + " (σ_L and its histogram from " +
+         std::to_string(s.pairs_sampled) + " pairs sampled with seed " + std::to_string(s.seed) +
+         ")";
+}
+
+std::string sigma_l_text(const CellAnalysis& a) {
+  const SigmaLSampling& s = a.sigma_l_sampling;
+  if (!s.sampled) return mm(a.rigid_body.sigma_l_m);
+  return mm(a.rigid_body.sigma_l_m) + " (sampled; 95 % interval " + format_mm(s.sigma_l_low_m, 5) +
+         " to " + format_mm(s.sigma_l_high_m, 5) + " mm)";
+}
+
 ReportTable summary_table(const CellReportInput& in, const CellAnalysis& a) {
   const ImprovementSummary& s = a.summary;
   ReportTable t;
@@ -22,8 +37,8 @@ ReportTable summary_table(const CellReportInput& in, const CellAnalysis& a) {
   t.header = {"quantity", "value"};
   t.rows = {
       {"fiducials in the model (J)", std::to_string(a.n_fiducials)},
-      {"fiducial pairs (L_ij, Eq. 1)", std::to_string(a.rigid_body.pairs)},
-      {"σ_L (Eq. 1)", mm(a.rigid_body.sigma_l_m)},
+      {"fiducial pairs (L_ij, Eq. 1)", pairs_text(a)},
+      {"σ_L (Eq. 1)", sigma_l_text(a)},
       {"σ_opt (repeat readings)", opt_mm(a.noise.sigma_opt_m)},
       {"σ_rep (robot repeatability)", opt_mm(a.noise.sigma_rep_m)},
       {"σ_noise (Eq. 9)", opt_mm(a.noise.sigma_noise_m)},
@@ -51,7 +66,10 @@ ReportFigure l_histogram_figure(const CellAnalysis& a) {
       charts::histogram_trace(a.l_histogram, 1e3, "fiducial pairs", charts::kCorrected));
   f.layout = charts::xy_layout("L = |X_i − X_j| − |Y_i − Y_j|  [mm]", "pairs [count]");
   const long long out = static_cast<long long>(a.l_histogram.below + a.l_histogram.above);
-  f.caption = "The width of this distribution is σ_L = " + mm(a.rigid_body.sigma_l_m) +
+  f.caption = std::string(a.sigma_l_sampling.sampled ? "Over a uniform sample of pairs (see the "
+                                                       "summary). "
+                                                     : "") +
+              "The width of this distribution is σ_L = " + mm(a.rigid_body.sigma_l_m) +
               ": the wider it is against the noise, the more systematic error RRBC can remove" +
               (out > 0 ? " (" + std::to_string(out) + " pairs beyond ±5 σ_L not drawn)." : ".");
   return f;

@@ -18,6 +18,15 @@ TEST(FileError, LineZeroMeansNoLine) {
                "m.json: unsupported model version 7");
 }
 
+// Found by fuzzing (tests/fuzz/regressions/robot_file): yaml-cpp quotes the raw byte after a
+// backslash in its message, so a message could hold a newline and span two lines.
+TEST(FileError, IsAlwaysOneLine) {
+  const FileError e("dir\nname.yaml", 3, "unknown escape character: \n\x01\x7f\tend\r");
+  EXPECT_STREQ(e.what(), "dir\\nname.yaml:3: unknown escape character: \\n\\x01\\x7f\\tend\\r");
+  EXPECT_EQ(e.path(), "dir\nname.yaml");  // the path itself is kept as given
+  EXPECT_STREQ(FileError("f", 0, "caf\xC3\xA9").what(), "f: caf\xC3\xA9");  // UTF-8 is kept
+}
+
 TEST(FileError, IsAnInputError) {
   try {
     throw FileError("x", 1, "y");

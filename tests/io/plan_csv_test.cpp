@@ -104,6 +104,12 @@ TEST(PlanCsv, BadPlanFiles) {
   EXPECT_TRUE(fails(h, 1, "header only"));
   EXPECT_TRUE(fails("point,role,robot_x_mm,robot_y_mm,robot_z_mm,q2_rad\nA,target,1,2,3,4\n", 1,
                     "missing 'q1_rad'"));
+  // Labels the writer could not write back (found by fuzzing: tests/fuzz/regressions/plan_csv).
+  EXPECT_TRUE(
+      fails(h + "A,fiducial,#P,1,2,3,0,0.5\n", 2, "part label '#P' has a quote or a leading '#'"));
+  EXPECT_TRUE(fails("role,point,robot_x_mm,robot_y_mm,robot_z_mm\ntarget,#A,1,2,3\n", 2,
+                    "point label '#A'"));
+  EXPECT_TRUE(fails(h + "A\"x,fiducial,P,1,2,3,0,0.5\n", 2, "point label"));
 }
 
 }  // namespace

@@ -8,7 +8,8 @@
 
 namespace vrreg {
 
-/// Bad content in a file: what() reads "path:line: message" (or "path: message" when line is 0).
+/// Bad content in a file: what() reads "path:line: message" (or "path: message" when line is 0),
+/// always one line (control characters in path or message are written as escapes: \n, \x01).
 class FileError : public InputError {
  public:
   FileError(const std::string& path, std::size_t line, const std::string& message);

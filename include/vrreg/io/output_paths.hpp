@@ -13,7 +13,8 @@ struct CommandPath {
 
 /// Throws FileError naming the output when an output is the same file as an input or as another
 /// output: same device and inode (hard links, symbolic links), or the same path once `..` and
-/// links are resolved. Empty paths are skipped. Call it before reading or writing anything.
+/// links are resolved, and (check_output_replaceable) when an output names a directory, FIFO,
+/// device, socket or read-only file. Empty paths are skipped. Call it before any other work.
 void check_outputs_are_not_inputs(const std::vector<CommandPath>& inputs,
                                   const std::vector<CommandPath>& outputs);
 

@@ -10,6 +10,7 @@
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/correction/interpolation.hpp"
+#include "vrreg/metrics/rigid_body_sampled.hpp"
 #include "vrreg/planning/procedure2.hpp"
 
 namespace vrreg {
@@ -27,6 +28,7 @@ struct RegistrationModel {
   planning::Procedure2 procedure2;
   double fre_m = 0.0;                ///< FRE of the registration (Eq. 2)
   double sigma_l_m = 0.0;            ///< sigma_L over the registered fiducial pairs (Eq. 1)
+  SigmaLSampling sigma_l_sampling;   ///< sampled: sigma_l_m is estimated from a sample of pairs
   std::optional<double> sigma_rep_m;  ///< robot repeatability given when building (Eq. 9) [m]
   std::string source;                ///< the fiducial file (or "arrays") it came from
 

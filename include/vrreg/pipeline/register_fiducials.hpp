@@ -11,6 +11,7 @@
 #include "vrreg/correction/interpolation.hpp"
 #include "vrreg/metrics/noise.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
+#include "vrreg/metrics/rigid_body_sampled.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/pipeline/points.hpp"
 #include "vrreg/planning/procedure2.hpp"
@@ -28,6 +29,8 @@ struct RegisterOptions {
   std::optional<RobustRegistrationOptions> robust;
   std::optional<double> sigma_rep_m;  ///< robot repeatability for sigma_noise and rho (Eq. 9) [m]
   bool rigid_body_statistics = true;  ///< sigma_L over all pairs (Eq. 1); off: sigma_L = 0
+  /// Above sigma_l.exact_max_points fiducials sigma_L is sampled (result and model say so).
+  SigmaLOptions sigma_l;
   InterpolationSettings interpolation;  ///< stored in the model: evaluate's and correct's default
   /// Procedure 2: strategy 1 and 2 need `config`; 3 registers the volume corners (needs joints and
   /// configuration labels; octuplet interpolation with a cube edge) with procedure2.seed (1).
@@ -42,6 +45,7 @@ struct RegisterResult {
   RegistrationResult registration;  ///< the fit (Eq. 2): FRE, residuals, spread, of `registered`
   std::size_t n_registered = 0;     ///< fiducials in the fit (8 for Strategy 3)
   RigidBodyStatistics rigid_body;   ///< L_ij over the registered fiducials (Eq. 1)
+  SigmaLSampling sigma_l_sampling;  ///< exact (all pairs) or sampled, with its interval
   NoiseFigures noise;               ///< sigma_opt, sigma_noise, rho (Eq. 9)
   std::vector<std::string> rejected;  ///< robust: names of the rejected fiducials
   std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2: what was relabelled

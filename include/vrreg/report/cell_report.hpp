@@ -12,6 +12,7 @@
 #include "vrreg/metrics/improvement.hpp"
 #include "vrreg/metrics/noise.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
+#include "vrreg/metrics/rigid_body_sampled.hpp"
 #include "vrreg/pipeline/evaluate.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/report/page.hpp"
@@ -33,6 +34,7 @@ struct CellAnalysis {
   int n_fiducials = 0;
   RigidBodyStatistics rigid_body;     ///< L_ij over the model's fiducial pairs (Eq. 1)
   Histogram l_histogram;              ///< of L_ij [m]
+  SigmaLSampling sigma_l_sampling;    ///< above 20 000 fiducials: both from sampled pairs
   NoiseFigures noise;  ///< sigma_opt (repeat readings), sigma_rep, sigma_noise, rho (Eq. 9)
   std::string method;  ///< Procedure 2 in words, e.g. "Strategy 2 (l2 joint distance)"; or empty
   Points3 targets_robot_m;          ///< nominal robot-frame positions of the targets
