@@ -19,15 +19,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
-
 long lines_of(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
 TEST(UsageErrors, AreOneLineWithStatus2) {
   const fs::path dir = fresh_dir("usage");
   for (const std::string& args : std::vector<std::string>{
-           "simulate ur5 A1 --seed -1 -o " + q(dir / "s.csv"), "simulate ur5 A1 -o ''", "register",
-           "register --fiducials x.csv --no-such-flag", "no-such-command",
+           "simulate ur5 A1 --seed -1 -o " + shell_quoted(dir / "s.csv"), "simulate ur5 A1 -o ''",
+           "register", "register --fiducials x.csv --no-such-flag", "no-such-command",
            "evaluate --model m.json --targets t.csv --per-target ''"}) {
     const CliResult r = run_vrreg(args);
     EXPECT_EQ(r.status, 2) << args;
@@ -49,13 +47,16 @@ TEST(OutputsThatAreNotFiles, AreRefusedBeforeTheInputsAreRead) {
   const fs::path fifo = dir / "fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
   fs::create_directory(dir / "d");
-  const std::string missing = q(dir / "missing.csv");  // reading it would fail differently
+  const std::string missing =
+      shell_quoted(dir / "missing.csv");  // reading it would fail differently
   for (const fs::path& out : {fifo, dir / "d"}) {
     for (const std::string& args :
-         {"register --fiducials " + missing + " -o " + q(out),
-          "evaluate --model " + missing + " --targets " + missing + " --per-target " + q(out),
-          "correct --model " + missing + " --points " + missing + " -o " + q(out),
-          "simulate ur5 A1 -o " + q(out), "simulate ur5 --write-errors " + q(out)}) {
+         {"register --fiducials " + missing + " -o " + shell_quoted(out),
+          "evaluate --model " + missing + " --targets " + missing + " --per-target " +
+              shell_quoted(out),
+          "correct --model " + missing + " --points " + missing + " -o " + shell_quoted(out),
+          "simulate ur5 A1 -o " + shell_quoted(out),
+          "simulate ur5 --write-errors " + shell_quoted(out)}) {
       const CliResult r = run_vrreg(args);
       EXPECT_EQ(r.status, 1) << args;
       EXPECT_EQ(lines_of(r.err), 1) << args << "\n" << r.err;
@@ -87,11 +88,11 @@ void write_fiducials(const fs::path& path, int j) {
 TEST(LargeRegistration, SamplesSigmaLAboveTwentyThousandFiducialsAndSaysSo) {
   const fs::path dir = fresh_dir("large");
   write_fiducials(dir / "f.csv", 20001);
-  const CliResult json =
-      run_vrreg("register --fiducials " + q(dir / "f.csv") + " --json -o " + q(dir / "m.json"));
-  ASSERT_EQ(json.status, 0) << json.err;
-  const auto j = nlohmann::json::parse(json.out);
-  ASSERT_TRUE(j.contains("sigma_l_sampling")) << json.out;
+  const CliResult run = run_vrreg("register --fiducials " + shell_quoted(dir / "f.csv") +
+                                  " --json -o " + shell_quoted(dir / "m.json"));
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto j = nlohmann::json::parse(run.out);
+  ASSERT_TRUE(j.contains("sigma_l_sampling")) << run.out;
   EXPECT_EQ(j["sigma_l_sampling"]["pairs"], 10000000);
   EXPECT_EQ(j["sigma_l_sampling"]["pairs_total"], 20001LL * 20000 / 2);
   EXPECT_EQ(j["pairs"], 10000000);
@@ -103,16 +104,17 @@ TEST(LargeRegistration, SamplesSigmaLAboveTwentyThousandFiducialsAndSaysSo) {
   EXPECT_EQ(model["sigma_l_sampling"]["pairs"], 10000000);
   EXPECT_EQ(model["sigma_l_mm"], j["sigma_l_mm"]);
 
-  const CliResult text = run_vrreg("register --fiducials " + q(dir / "f.csv"));
+  const CliResult text = run_vrreg("register --fiducials " + shell_quoted(dir / "f.csv"));
   ASSERT_EQ(text.status, 0) << text.err;
   EXPECT_NE(text.out.find("SAMPLED: 10000000 of 200010000 pairs"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("--exact-sigma-l"), std::string::npos) << text.out;
   // Same seed, same bytes.
-  EXPECT_EQ(run_vrreg("register --fiducials " + q(dir / "f.csv")).out, text.out);
+  EXPECT_EQ(run_vrreg("register --fiducials " + shell_quoted(dir / "f.csv")).out, text.out);
 
   // At 20 000 fiducials every pair is used, and the model has no sampling key.
   write_fiducials(dir / "g.csv", 20000);
-  const CliResult exact = run_vrreg("register --fiducials " + q(dir / "g.csv") + " --json");
+  const CliResult exact =
+      run_vrreg("register --fiducials " + shell_quoted(dir / "g.csv") + " --json");
   ASSERT_EQ(exact.status, 0) << exact.err;
   const auto e = nlohmann::json::parse(exact.out);
   EXPECT_FALSE(e.contains("sigma_l_sampling"));
