@@ -37,6 +37,18 @@ void BM_vrreg_register_rigid(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
+// The fast path: transform and FRE from one pass of moments, no per-point residuals.
+void BM_vrreg_register_rigid_no_residuals(benchmark::State& state) {
+  const Data d = make_data(state.range(0));
+  vrreg::RegistrationOptions options;
+  options.residuals = false;
+  for (auto _ : state) {
+    auto r = vrreg::register_rigid(d.sensor, d.robot, options);
+    benchmark::DoNotOptimize(r);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
 // The peer: Eigen's Umeyama without scaling. It returns only the transform (no FRE, residuals or
 // degeneracy check), so it does less work than vrreg's call.
 void BM_eigen_umeyama(benchmark::State& state) {
@@ -61,5 +73,6 @@ void BM_vrreg_sigma_l(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_vrreg_register_rigid)->Arg(8)->Arg(1000)->Arg(9600)->Arg(1000000);
+BENCHMARK(BM_vrreg_register_rigid_no_residuals)->Arg(8)->Arg(1000)->Arg(9600)->Arg(1000000);
 BENCHMARK(BM_eigen_umeyama)->Arg(8)->Arg(1000)->Arg(9600)->Arg(1000000);
 BENCHMARK(BM_vrreg_sigma_l)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime();

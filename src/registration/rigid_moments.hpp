@@ -1,0 +1,40 @@
+#pragma once
+// Internal: the one-pass moments of register_rigid's fast path (RegistrationOptions::residuals =
+// false). Four lanes over the points, products accumulated with a fused multiply-add, blocks of
+// 64 points added into compensated (hi + lo) totals, so the sums are accurate enough for the
+// closed-form FRE. The AVX2 kernel and the portable one give the same bits (same lanes, same
+// operations, std::fma is correctly rounded), so results do not depend on the CPU.
+#include <Eigen/Core>
+
+#include "vrreg/core/types.hpp"
+
+namespace vrreg::detail {
+
+/// Indices into FastMoments::hi / lo.
+enum MomentIndex : int {
+  kSumX = 0,     ///< sum w a, 3 entries (a = x - shift_x)
+  kSumY = 3,     ///< sum w b, 3 entries (b = y - shift_y)
+  kSumXY = 6,    ///< sum w a b', row-major, 9 entries
+  kSumXX = 15,   ///< sum w a a': 00 01 02 11 12 22
+  kSumYY = 21,   ///< sum w |b|^2
+  kWeight = 22,  ///< sum w (weighted only)
+  kMoments = 23,
+};
+
+/// Sums about the shift points; the exact sum is about hi + lo.
+struct FastMoments {
+  double hi[kMoments] = {};
+  double lo[kMoments] = {};
+};
+
+/// One pass over corresponding points x, y (3 x n) with optional weights (empty: all 1).
+FastMoments fast_moments(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
+                         const Eigen::Ref<const Eigen::VectorXd>& w,
+                         const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y);
+
+/// The same sums by the portable kernel (tests compare it with the dispatched one).
+FastMoments fast_moments_portable(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
+                                  const Eigen::Ref<const Eigen::VectorXd>& w,
+                                  const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y);
+
+}  // namespace vrreg::detail
