@@ -202,6 +202,87 @@ template <bool kWeighted>
   return m;
 }
 
+// With AVX-512VL's 32 registers every accumulator stays in a register: one sweep, the same
+// four-lane operations in the same order per accumulator (so the same bits as the others).
+template <bool kWeighted>
+[[gnu::target("avx2,fma,avx512f,avx512vl")]] FastMoments avx512vl(
+    const ConstPoints3Ref& x, const ConstPoints3Ref& y, const Eigen::Ref<const Eigen::VectorXd>& w,
+    const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y) {
+  FastMoments m;
+  const Eigen::Index n = x.cols();
+  const bool packed = x.outerStride() == 3 && y.outerStride() == 3;
+  __m256d sx[3], sy[3];
+  for (int r = 0; r < 3; ++r) {
+    sx[r] = _mm256_set1_pd(shift_x[r]);
+    sy[r] = _mm256_set1_pd(shift_y[r]);
+  }
+  for (Eigen::Index block = 0; block < n; block += kLanes * kGroupsPerBlock) {
+    const Eigen::Index end = std::min<Eigen::Index>(n, block + kLanes * kGroupsPerBlock);
+    __m256d s_w = _mm256_setzero_pd(), syy = _mm256_setzero_pd();
+    __m256d s_a[3], s_b[3], h[9], cxx[6];
+    for (auto& v : s_a) v = _mm256_setzero_pd();
+    for (auto& v : s_b) v = _mm256_setzero_pd();
+    for (auto& v : h) v = _mm256_setzero_pd();
+    for (auto& v : cxx) v = _mm256_setzero_pd();
+    for (Eigen::Index j = block; j < end; j += kLanes) {
+      __m256d a[3], b[3], wv = _mm256_set1_pd(1.0);
+      if (packed && j + kLanes <= n) {
+        deinterleave(x.data() + 3 * j, a);
+        deinterleave(y.data() + 3 * j, b);
+        for (int r = 0; r < 3; ++r) {
+          a[r] = _mm256_sub_pd(a[r], sx[r]);
+          b[r] = _mm256_sub_pd(b[r], sy[r]);
+        }
+        if (kWeighted) wv = _mm256_loadu_pd(w.data() + j);
+      } else {
+        Group gr;
+        load_group(x, y, w, shift_x, shift_y, j, gr);
+        for (int r = 0; r < 3; ++r) {
+          a[r] = _mm256_loadu_pd(gr.a[r]);
+          b[r] = _mm256_loadu_pd(gr.b[r]);
+        }
+        wv = _mm256_loadu_pd(gr.w);
+      }
+      __m256d wa[3], wb[3];
+      for (int r = 0; r < 3; ++r) {
+        wa[r] = kWeighted ? _mm256_mul_pd(wv, a[r]) : a[r];
+        wb[r] = kWeighted ? _mm256_mul_pd(wv, b[r]) : b[r];
+        s_a[r] = _mm256_add_pd(s_a[r], wa[r]);
+        s_b[r] = _mm256_add_pd(s_b[r], wb[r]);
+      }
+      if (kWeighted) s_w = _mm256_add_pd(s_w, wv);
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) h[3 * r + c] = _mm256_fmadd_pd(wa[r], b[c], h[3 * r + c]);
+      }
+      cxx[0] = _mm256_fmadd_pd(wa[0], a[0], cxx[0]);
+      cxx[1] = _mm256_fmadd_pd(wa[0], a[1], cxx[1]);
+      cxx[2] = _mm256_fmadd_pd(wa[0], a[2], cxx[2]);
+      cxx[3] = _mm256_fmadd_pd(wa[1], a[1], cxx[3]);
+      cxx[4] = _mm256_fmadd_pd(wa[1], a[2], cxx[4]);
+      cxx[5] = _mm256_fmadd_pd(wa[2], a[2], cxx[5]);
+      __m256d t = _mm256_mul_pd(wb[0], b[0]);
+      t = _mm256_fmadd_pd(wb[1], b[1], t);
+      t = _mm256_fmadd_pd(wb[2], b[2], t);
+      syy = _mm256_add_pd(syy, t);
+    }
+    for (int r = 0; r < 3; ++r) {
+      add_lanes(m, kSumX + r, s_a[r]);
+      add_lanes(m, kSumY + r, s_b[r]);
+    }
+    for (int k = 0; k < 9; ++k) add_lanes(m, kSumXY + k, h[k]);
+    for (int k = 0; k < 6; ++k) add_lanes(m, kSumXX + k, cxx[k]);
+    add_lanes(m, kSumYY, syy);
+    if (kWeighted) add_lanes(m, kWeight, s_w);
+  }
+  return m;
+}
+
+bool cpu_has_avx512vl() {
+  static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+                          __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  return has;
+}
+
 bool cpu_has_avx2_fma() {
   static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return has;
@@ -211,23 +292,46 @@ bool cpu_has_avx2_fma() {
 
 }  // namespace
 
-FastMoments fast_moments_portable(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
-                                  const Eigen::Ref<const Eigen::VectorXd>& w,
-                                  const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y) {
-  return w.size() != 0 ? portable<true>(x, y, w, shift_x, shift_y)
-                       : portable<false>(x, y, w, shift_x, shift_y);
-}
-
 FastMoments fast_moments(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
                          const Eigen::Ref<const Eigen::VectorXd>& w,
                          const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y) {
 #ifdef VRREG_MOMENTS_AVX2
+  if (cpu_has_avx512vl()) {
+    return w.size() != 0 ? avx512vl<true>(x, y, w, shift_x, shift_y)
+                         : avx512vl<false>(x, y, w, shift_x, shift_y);
+  }
   if (cpu_has_avx2_fma()) {
     return w.size() != 0 ? avx2<true>(x, y, w, shift_x, shift_y)
                          : avx2<false>(x, y, w, shift_x, shift_y);
   }
 #endif
-  return fast_moments_portable(x, y, w, shift_x, shift_y);
+  return w.size() != 0 ? portable<true>(x, y, w, shift_x, shift_y)
+                       : portable<false>(x, y, w, shift_x, shift_y);
+}
+
+bool fast_moments_using(MomentKernel kernel, const ConstPoints3Ref& x, const ConstPoints3Ref& y,
+                        const Eigen::Ref<const Eigen::VectorXd>& w, const Eigen::Vector3d& shift_x,
+                        const Eigen::Vector3d& shift_y, FastMoments& out) {
+  const bool weighted = w.size() != 0;
+  switch (kernel) {
+    case MomentKernel::kPortable:
+      out = weighted ? portable<true>(x, y, w, shift_x, shift_y)
+                     : portable<false>(x, y, w, shift_x, shift_y);
+      return true;
+#ifdef VRREG_MOMENTS_AVX2
+    case MomentKernel::kAvx2:
+      if (!cpu_has_avx2_fma()) return false;
+      out = weighted ? avx2<true>(x, y, w, shift_x, shift_y) : avx2<false>(x, y, w, shift_x, shift_y);
+      return true;
+    case MomentKernel::kAvx512:
+      if (!cpu_has_avx512vl()) return false;
+      out = weighted ? avx512vl<true>(x, y, w, shift_x, shift_y)
+                     : avx512vl<false>(x, y, w, shift_x, shift_y);
+      return true;
+#endif
+    default:
+      return false;
+  }
 }
 
 }  // namespace vrreg::detail

@@ -32,9 +32,13 @@ FastMoments fast_moments(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
                          const Eigen::Ref<const Eigen::VectorXd>& w,
                          const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y);
 
-/// The same sums by the portable kernel (tests compare it with the dispatched one).
-FastMoments fast_moments_portable(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
-                                  const Eigen::Ref<const Eigen::VectorXd>& w,
-                                  const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y);
+/// The kernels fast_moments picks from (the widest the CPU has).
+enum class MomentKernel { kPortable, kAvx2, kAvx512 };
+
+/// The same sums by one named kernel, for tests that compare them bit for bit; false (and `out`
+/// unchanged) when this CPU or build lacks it.
+bool fast_moments_using(MomentKernel kernel, const ConstPoints3Ref& x, const ConstPoints3Ref& y,
+                        const Eigen::Ref<const Eigen::VectorXd>& w, const Eigen::Vector3d& shift_x,
+                        const Eigen::Vector3d& shift_y, FastMoments& out);
 
 }  // namespace vrreg::detail

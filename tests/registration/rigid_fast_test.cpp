@@ -158,8 +158,8 @@ TEST(RegisterRigidFast, StridedInputGivesTheSameResult) {
   EXPECT_EQ(a.fre_m, b.fre_m);
 }
 
-// The dispatched kernel (AVX2 + FMA where the CPU has it) and the portable one give the same bits,
-// so results do not depend on the machine.
+// Every kernel this CPU has (AVX-512VL, AVX2 + FMA) gives the portable kernel's bits, so results
+// do not depend on the machine.
 TEST(RegisterRigidFast, KernelsAgreeBitForBit) {
   Random rng(15);
   for (const int n : {1, 3, 4, 5, 63, 64, 65, 130, 1001}) {
@@ -169,11 +169,18 @@ TEST(RegisterRigidFast, KernelsAgreeBitForBit) {
     const Eigen::Vector3d sx = c.x.col(0), sy = c.y.col(0);
     for (const bool weighted : {false, true}) {
       const Eigen::VectorXd& ww = weighted ? w : Eigen::VectorXd();
-      const detail::FastMoments a = detail::fast_moments(c.x, c.y, ww, sx, sy);
-      const detail::FastMoments b = detail::fast_moments_portable(c.x, c.y, ww, sx, sy);
-      for (int k = 0; k < detail::kMoments; ++k) {
-        EXPECT_EQ(a.hi[k], b.hi[k]) << "n " << n << " k " << k;
-        EXPECT_EQ(a.lo[k], b.lo[k]) << "n " << n << " k " << k;
+      detail::FastMoments b;
+      ASSERT_TRUE(detail::fast_moments_using(detail::MomentKernel::kPortable, c.x, c.y, ww, sx, sy,
+                                             b));
+      const detail::FastMoments dispatched = detail::fast_moments(c.x, c.y, ww, sx, sy);
+      for (const auto kernel : {detail::MomentKernel::kAvx2, detail::MomentKernel::kAvx512}) {
+        detail::FastMoments a = dispatched;
+        if (!detail::fast_moments_using(kernel, c.x, c.y, ww, sx, sy, a)) continue;
+        for (int k = 0; k < detail::kMoments; ++k) {
+          EXPECT_EQ(a.hi[k], b.hi[k]) << "n " << n << " k " << k;
+          EXPECT_EQ(a.lo[k], b.lo[k]) << "n " << n << " k " << k;
+          EXPECT_EQ(dispatched.hi[k], b.hi[k]) << "n " << n << " k " << k;
+        }
       }
     }
   }
