@@ -11,15 +11,40 @@ namespace vrreg::detail {
 namespace {
 
 constexpr int kLanes = 4;
-constexpr int kGroupsPerBlock = 16;  // 64 points per block: short chains, then compensated totals
+constexpr int kGroupsPerBlock = 32;  // 128 points per block: short chains, then compensated totals
 
-// Adds a block's lane sums (((l0 + l1) + l2) + l3) to the compensated total (TwoSum).
-void add_block(FastMoments& m, int k, const double lanes[kLanes]) {
-  const double t = ((lanes[0] + lanes[1]) + lanes[2]) + lanes[3];
-  const double s = m.hi[k] + t;
-  const double bt = s - m.hi[k];
-  m.lo[k] += (m.hi[k] - (s - bt)) + (t - bt);
-  m.hi[k] = s;
+// Compensated totals per lane: the exact sum of the block sums is about hi + lo.
+struct LaneTotals {
+  alignas(32) double hi[kMoments][kLanes] = {};
+  alignas(32) double lo[kMoments][kLanes] = {};
+};
+
+// TwoSum of a block's lane sums into the lane totals.
+void add_block(LaneTotals& m, int k, const double lanes[kLanes]) {
+  for (int l = 0; l < kLanes; ++l) {
+    const double t = lanes[l];
+    const double s = m.hi[k][l] + t;
+    const double bt = s - m.hi[k][l];
+    m.lo[k][l] += (m.hi[k][l] - (s - bt)) + (t - bt);
+    m.hi[k][l] = s;
+  }
+}
+
+// Lanes 1..3 added into lane 0 by TwoSum, their low parts with the errors.
+FastMoments finish(const LaneTotals& t) {
+  FastMoments m;
+  for (int k = 0; k < kMoments; ++k) {
+    double hi = t.hi[k][0], lo = t.lo[k][0];
+    for (int l = 1; l < kLanes; ++l) {
+      const double s = hi + t.hi[k][l];
+      const double bt = s - hi;
+      lo += ((hi - (s - bt)) + (t.hi[k][l] - bt)) + t.lo[k][l];
+      hi = s;
+    }
+    m.hi[k] = hi;
+    m.lo[k] = lo;
+  }
+  return m;
 }
 
 // Coordinates (minus the shift) and weights of the 4 points from column j; missing points (past
@@ -49,7 +74,7 @@ template <bool kWeighted>
 FastMoments portable(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
                      const Eigen::Ref<const Eigen::VectorXd>& w, const Eigen::Vector3d& shift_x,
                      const Eigen::Vector3d& shift_y) {
-  FastMoments m;
+  LaneTotals m;
   const Eigen::Index n = x.cols();
   for (Eigen::Index block = 0; block < n; block += kLanes * kGroupsPerBlock) {
     double acc[kMoments][kLanes] = {};
@@ -85,7 +110,7 @@ FastMoments portable(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
     }
     for (int k = 0; k < kMoments; ++k) add_block(m, k, acc[k]);
   }
-  return m;
+  return finish(m);
 }
 
 #ifdef VRREG_MOMENTS_AVX2
@@ -103,10 +128,14 @@ FastMoments portable(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
   out[2] = _mm256_shuffle_pd(t1, t2, 0b1010);
 }
 
-[[gnu::target("avx2,fma")]] inline void add_lanes(FastMoments& m, int k, __m256d v) {
-  alignas(32) double lanes[kLanes];
-  _mm256_store_pd(lanes, v);
-  add_block(m, k, lanes);
+// add_block on four lanes at once (the same operations per lane).
+[[gnu::target("avx2,fma")]] inline void add_lanes(LaneTotals& m, int k, __m256d t) {
+  const __m256d hi = _mm256_load_pd(m.hi[k]);
+  const __m256d s = _mm256_add_pd(hi, t);
+  const __m256d bt = _mm256_sub_pd(s, hi);
+  const __m256d err = _mm256_add_pd(_mm256_sub_pd(hi, _mm256_sub_pd(s, bt)), _mm256_sub_pd(t, bt));
+  _mm256_store_pd(m.lo[k], _mm256_add_pd(_mm256_load_pd(m.lo[k]), err));
+  _mm256_store_pd(m.hi[k], s);
 }
 
 // The same operations as `portable`, four lanes per instruction. Three sweeps per block over the
@@ -116,7 +145,7 @@ template <bool kWeighted>
                                              const Eigen::Ref<const Eigen::VectorXd>& w,
                                              const Eigen::Vector3d& shift_x,
                                              const Eigen::Vector3d& shift_y) {
-  FastMoments m;
+  LaneTotals m;
   const Eigen::Index n = x.cols();
   const bool packed = x.outerStride() == 3 && y.outerStride() == 3;
   __m256d sx[3], sy[3];
@@ -199,7 +228,7 @@ template <bool kWeighted>
     add_lanes(m, kSumYY, syy);
     if (kWeighted) add_lanes(m, kWeight, s_w);
   }
-  return m;
+  return finish(m);
 }
 
 // With AVX-512VL's 32 registers every accumulator stays in a register: one sweep, the same
@@ -208,7 +237,7 @@ template <bool kWeighted>
 [[gnu::target("avx2,fma,avx512f,avx512vl")]] FastMoments avx512vl(
     const ConstPoints3Ref& x, const ConstPoints3Ref& y, const Eigen::Ref<const Eigen::VectorXd>& w,
     const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y) {
-  FastMoments m;
+  LaneTotals m;
   const Eigen::Index n = x.cols();
   const bool packed = x.outerStride() == 3 && y.outerStride() == 3;
   __m256d sx[3], sy[3];
@@ -274,7 +303,7 @@ template <bool kWeighted>
     add_lanes(m, kSumYY, syy);
     if (kWeighted) add_lanes(m, kWeight, s_w);
   }
-  return m;
+  return finish(m);
 }
 
 bool cpu_has_avx512vl() {

@@ -1,8 +1,8 @@
 #pragma once
 // Internal: the one-pass moments of register_rigid's fast path (RegistrationOptions::residuals =
 // false). Four lanes over the points, products accumulated with a fused multiply-add, blocks of
-// 64 points added into compensated (hi + lo) totals, so the sums are accurate enough for the
-// closed-form FRE. The AVX2 kernel and the portable one give the same bits (same lanes, same
+// 128 points added (per lane) into compensated (hi + lo) totals, so the sums are accurate enough for the
+// closed-form FRE. The AVX-512VL, AVX2 and portable kernels give the same bits (same lanes, same
 // operations, std::fma is correctly rounded), so results do not depend on the CPU.
 #include <Eigen/Core>
 
