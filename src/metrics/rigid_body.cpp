@@ -75,7 +75,8 @@ constexpr std::size_t kChunk = 256;  // pairs per vectorised chunk (fits in L1 w
 // L_ij for j in [j0, j0 + m) into out: the same operations in the same order as for_pairs, so the
 // same bits at any vector width (-ffp-contract=off on this file keeps them unfused).
 template <int kTarget>
-[[gnu::always_inline]] inline void pair_lengths(const PairData& d, std::size_t i, std::size_t j0, std::size_t m, double* out) {
+[[gnu::always_inline]] inline void pair_lengths(const PairData& d, std::size_t i, std::size_t j0,
+                                                std::size_t m, double* out) {
   const double xi0 = d.x[0][i], xi1 = d.x[1][i], xi2 = d.x[2][i];
   const double yi0 = d.y[0][i], yi1 = d.y[1][i], yi2 = d.y[2][i];
   const double* __restrict x0 = d.x[0].data() + j0;
@@ -94,7 +95,8 @@ template <int kTarget>
 // The pairs of rows [row_begin, row_end) folded into acc in for_pairs' order: the sums run in
 // sequence (the bits of the reference order).
 template <int kTarget>
-[[gnu::always_inline]] inline void fold_rows(const PairData& d, std::size_t row_begin, std::size_t row_end, Sums& acc) {
+[[gnu::always_inline]] inline void fold_rows(const PairData& d, std::size_t row_begin,
+                                             std::size_t row_end, Sums& acc) {
   const std::size_t n = d.x[0].size();
   alignas(64) double l[kChunk];
   for (std::size_t i = row_begin; i < row_end; ++i) {

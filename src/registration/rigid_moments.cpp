@@ -120,9 +120,9 @@ FastMoments portable(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
   const __m256d r0 = _mm256_loadu_pd(p);
   const __m256d r1 = _mm256_loadu_pd(p + 4);
   const __m256d r2 = _mm256_loadu_pd(p + 8);
-  const __m256d t0 = _mm256_blend_pd(r0, r1, 0b1100);        // x0 y0 x2 y2
-  const __m256d t1 = _mm256_permute2f128_pd(r0, r2, 0x21);   // z0 x1 z2 x3
-  const __m256d t2 = _mm256_blend_pd(r1, r2, 0b1100);        // y1 z1 y3 z3
+  const __m256d t0 = _mm256_blend_pd(r0, r1, 0b1100);       // x0 y0 x2 y2
+  const __m256d t1 = _mm256_permute2f128_pd(r0, r2, 0x21);  // z0 x1 z2 x3
+  const __m256d t2 = _mm256_blend_pd(r1, r2, 0b1100);       // y1 z1 y3 z3
   out[0] = _mm256_shuffle_pd(t0, t1, 0b1010);
   out[1] = _mm256_shuffle_pd(t0, t2, 0b0101);
   out[2] = _mm256_shuffle_pd(t1, t2, 0b1010);
@@ -322,8 +322,8 @@ bool cpu_has_avx2_fma() {
 }  // namespace
 
 FastMoments fast_moments(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
-                         const Eigen::Ref<const Eigen::VectorXd>& w,
-                         const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y) {
+                         const Eigen::Ref<const Eigen::VectorXd>& w, const Eigen::Vector3d& shift_x,
+                         const Eigen::Vector3d& shift_y) {
 #ifdef VRREG_MOMENTS_AVX2
   if (cpu_has_avx512vl()) {
     return w.size() != 0 ? avx512vl<true>(x, y, w, shift_x, shift_y)
@@ -350,7 +350,8 @@ bool fast_moments_using(MomentKernel kernel, const ConstPoints3Ref& x, const Con
 #ifdef VRREG_MOMENTS_AVX2
     case MomentKernel::kAvx2:
       if (!cpu_has_avx2_fma()) return false;
-      out = weighted ? avx2<true>(x, y, w, shift_x, shift_y) : avx2<false>(x, y, w, shift_x, shift_y);
+      out =
+          weighted ? avx2<true>(x, y, w, shift_x, shift_y) : avx2<false>(x, y, w, shift_x, shift_y);
       return true;
     case MomentKernel::kAvx512:
       if (!cpu_has_avx512vl()) return false;

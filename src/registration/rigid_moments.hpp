@@ -1,9 +1,10 @@
 #pragma once
 // Internal: the one-pass moments of register_rigid's fast path (RegistrationOptions::residuals =
 // false). Four lanes over the points, products accumulated with a fused multiply-add, blocks of
-// 128 points added (per lane) into compensated (hi + lo) totals, so the sums are accurate enough for the
-// closed-form FRE. The AVX-512VL, AVX2 and portable kernels give the same bits (same lanes, same
-// operations, std::fma is correctly rounded), so results do not depend on the CPU.
+// 128 points added (per lane) into compensated (hi + lo) totals, so the sums are accurate enough
+// for the closed-form FRE. The AVX-512VL, AVX2 and portable kernels give the same bits (same
+// lanes, same operations, std::fma is correctly rounded), so results do not depend on the CPU.
+// Without FMA hardware std::fma is a library call: the portable kernel is then slow but exact.
 #include <Eigen/Core>
 
 #include "vrreg/core/types.hpp"
@@ -29,8 +30,8 @@ struct FastMoments {
 
 /// One pass over corresponding points x, y (3 x n) with optional weights (empty: all 1).
 FastMoments fast_moments(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
-                         const Eigen::Ref<const Eigen::VectorXd>& w,
-                         const Eigen::Vector3d& shift_x, const Eigen::Vector3d& shift_y);
+                         const Eigen::Ref<const Eigen::VectorXd>& w, const Eigen::Vector3d& shift_x,
+                         const Eigen::Vector3d& shift_y);
 
 /// The kernels fast_moments picks from (the widest the CPU has).
 enum class MomentKernel { kPortable, kAvx2, kAvx512 };

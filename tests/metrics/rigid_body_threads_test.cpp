@@ -1,13 +1,13 @@
 // sigma_L (Eq. 1) over all pairs: the vectorised, threaded kernel gives the bits of the plain
 // loop folded in tbb::parallel_deterministic_reduce's fixed tree (the implementation before it,
 // kept here as the reference), on any number of threads.
-#include <algorithm>
-#include <limits>
-
 #include <gtest/gtest.h>
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <limits>
 
 #include "vrreg/metrics/rigid_body.hpp"
 #include "vrreg_test.hpp"

@@ -1,9 +1,9 @@
 // register_rigid without residuals (RegistrationOptions::residuals = false): the transform from
 // the compensated one-pass moments and FRE in closed form, against the residuals path and a
 // two-pass FRE in extended precision.
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "registration/rigid_moments.hpp"
 #include "vrreg/core/check.hpp"
@@ -80,16 +80,16 @@ void expect_same_transform(const RegistrationResult& fast, const RegistrationRes
 }
 
 // Typical data (mm noise on a 0.3 m layout), near the origin and far from it, at the sizes of
-// the paper's data sets and beyond: closed-form FRE = two-pass FRE (see closed_form_tolerance). Far from the
-// origin no FRE is better than the rounding of the coordinates themselves (each residual
+// the paper's data sets and beyond: closed-form FRE = two-pass FRE (see closed_form_tolerance). Far
+// from the origin no FRE is better than the rounding of the coordinates themselves (each residual
 // R x + tau - y is formed from numbers of size |offset|), hence the absolute floor.
 TEST(RegisterRigidFast, ClosedFormFreMatchesTwoPass) {
   Random rng(11);
   for (const int n : {3, 8, 63, 64, 65, 519, 1000, 9600, 100000}) {
     for (const double offset_m : {0.0, 2.0, 1e3, 1e5}) {
       for (const double noise_m : {0.5e-3, 1e-5}) {
-        SCOPED_TRACE(::testing::Message() << "n " << n << " offset " << offset_m << " noise "
-                                          << noise_m);
+        SCOPED_TRACE(::testing::Message()
+                     << "n " << n << " offset " << offset_m << " noise " << noise_m);
         const Case c = make_case(rng, n, 0.15, Eigen::Vector3d(offset_m, -0.5 * offset_m, 0.3),
                                  noise_m, 1.5 + offset_m);
         const RegistrationResult fast = register_rigid(c.x, c.y, fast_options());
@@ -148,9 +148,9 @@ TEST(RegisterRigidFast, StridedInputGivesTheSameResult) {
   big_x.topRows(3) = c.x;
   big_y.topRows(3) = c.y;
   const Eigen::Map<const Eigen::Matrix3Xd, 0, Eigen::OuterStride<>> sx(big_x.data(), 3, 777,
-                                                                        Eigen::OuterStride<>(5));
+                                                                       Eigen::OuterStride<>(5));
   const Eigen::Map<const Eigen::Matrix3Xd, 0, Eigen::OuterStride<>> sy(big_y.data(), 3, 777,
-                                                                        Eigen::OuterStride<>(5));
+                                                                       Eigen::OuterStride<>(5));
   const RegistrationResult a = register_rigid(c.x, c.y, fast_options());
   const RegistrationResult b = register_rigid(sx, sy, fast_options());
   EXPECT_EQ(a.T_robot_sensor.rotation, b.T_robot_sensor.rotation);
@@ -170,8 +170,8 @@ TEST(RegisterRigidFast, KernelsAgreeBitForBit) {
     for (const bool weighted : {false, true}) {
       const Eigen::VectorXd& ww = weighted ? w : Eigen::VectorXd();
       detail::FastMoments b;
-      ASSERT_TRUE(detail::fast_moments_using(detail::MomentKernel::kPortable, c.x, c.y, ww, sx, sy,
-                                             b));
+      ASSERT_TRUE(
+          detail::fast_moments_using(detail::MomentKernel::kPortable, c.x, c.y, ww, sx, sy, b));
       const detail::FastMoments dispatched = detail::fast_moments(c.x, c.y, ww, sx, sy);
       for (const auto kernel : {detail::MomentKernel::kAvx2, detail::MomentKernel::kAvx512}) {
         detail::FastMoments a = dispatched;
