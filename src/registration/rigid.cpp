@@ -157,7 +157,8 @@ void solve(const Eigen::Matrix3d& h, const Eigen::Matrix3d& cxx, double w,
   t.translation_m = mean_y - t.scale * (t.rotation * mean_x);
 }
 
-// Below this many points the residual pass costs less than the extended-precision closed form.
+// Below this many points the residuals path (without storing residuals) costs less than the
+// fast kernel and the extended-precision closed form.
 constexpr Eigen::Index kClosedFormMinPoints = 64;
 // The closed-form FRE is used while the residual sum is at least this share of the spread terms
 // (sum |s R a|^2 + sum |b|^2, centred): its relative rounding error is ~1e-16 / share (2e-12 for
@@ -222,7 +223,7 @@ RegistrationResult register_from_moments(const ConstPoints3Ref& x, const ConstPo
   const Real spread_terms = s * s * rcr + syy;
   const Real q = spread_terms - 2.0L * s * rh;
   double sum_sq = 0.0;
-  if (x.cols() >= kClosedFormMinPoints && q >= kClosedFormMinShare * spread_terms) {
+  if (q >= kClosedFormMinShare * spread_terms) {
     sum_sq = static_cast<double>(q);
   } else {
     sum_sq = residual_sum(x, y, weights, t, nullptr);
@@ -239,7 +240,8 @@ RegistrationResult register_rigid(const ConstPoints3Ref& points_sensor_m,
                                   const Eigen::Ref<const Eigen::VectorXd>& weights) {
   options.validate();
   check_inputs(points_sensor_m, points_robot_m, weights);
-  if (!options.residuals) {
+  // Few points: the two passes below cost less than the closed form (and give its exact numbers).
+  if (!options.residuals && points_sensor_m.cols() >= kClosedFormMinPoints) {
     return register_from_moments(points_sensor_m, points_robot_m, options, weights);
   }
   const bool weighted = weights.size() != 0;
@@ -264,8 +266,9 @@ RegistrationResult register_rigid(const ConstPoints3Ref& points_sensor_m,
   RegistrationResult result;
   solve(h, cxx, w, shift_x + mean_x_shifted, shift_y + mean_y_shifted, options, result);
   // Residuals (Eq. 2) in a second pass: exact even when FRE is at rounding level.
-  const double sum_sq = residual_sum(points_sensor_m, points_robot_m, weights,
-                                     result.T_robot_sensor, &result.residuals_m);
+  const double sum_sq =
+      residual_sum(points_sensor_m, points_robot_m, weights, result.T_robot_sensor,
+                   options.residuals ? &result.residuals_m : nullptr);
   result.fre_m = std::sqrt(sum_sq / w);
   return result;
 }
