@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "registration/rigid_moments.hpp"
 #include "vrreg/core/check.hpp"
@@ -195,6 +196,15 @@ TEST(RegisterRigidFast, RejectsTheSameBadInput) {
   x(1, 4) = std::nan("");
   EXPECT_THROW(register_rigid(x, y, fast_options()), InputError);
   EXPECT_THROW(register_rigid(x.leftCols(2), y.leftCols(2), fast_options()), InputError);
+  // The same past 64 points, where the one-pass kernel runs.
+  Points3 long_line(3, 200);
+  for (int j = 0; j < 200; ++j) long_line.col(j) = Eigen::Vector3d(j, 2.0 * j, -j);
+  EXPECT_THROW(register_rigid(long_line, long_line, fast_options()), InputError);
+  Points3 u = random_points(rng, 200, 0.1), v = u;
+  v(2, 150) = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(register_rigid(u, v, fast_options()), InputError);
+  Points3 huge = u * 1e300;
+  EXPECT_THROW(register_rigid(huge, huge, fast_options()), InputError);
 }
 
 }  // namespace
