@@ -2,6 +2,7 @@
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 
 #include "vrreg/core/random.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
@@ -37,6 +38,18 @@ void BM_vrreg_register_rigid(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
+// The fast path: transform and FRE from one pass of moments, no per-point residuals.
+void BM_vrreg_register_rigid_no_residuals(benchmark::State& state) {
+  const Data d = make_data(state.range(0));
+  vrreg::RegistrationOptions options;
+  options.residuals = false;
+  for (auto _ : state) {
+    auto r = vrreg::register_rigid(d.sensor, d.robot, options);
+    benchmark::DoNotOptimize(r);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
 // The peer: Eigen's Umeyama without scaling. It returns only the transform (no FRE, residuals or
 // degeneracy check), so it does less work than vrreg's call.
 void BM_eigen_umeyama(benchmark::State& state) {
@@ -58,8 +71,34 @@ void BM_vrreg_sigma_l(benchmark::State& state) {
       static_cast<double>(state.range(0)) * static_cast<double>(state.range(0) - 1) / 2.0;
 }
 
+// The peer: the loop a user writes (one thread, Eigen columns, running sums).
+void BM_naive_sigma_l(benchmark::State& state) {
+  const Data d = make_data(state.range(0));
+  for (auto _ : state) {
+    double sum = 0.0, sum_sq = 0.0;
+    const Eigen::Index n = d.sensor.cols();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      for (Eigen::Index j = i + 1; j < n; ++j) {
+        const double l = (d.sensor.col(i) - d.sensor.col(j)).norm() -
+                         (d.robot.col(i) - d.robot.col(j)).norm();
+        sum += l;
+        sum_sq += l * l;
+      }
+    }
+    const double pairs = static_cast<double>(n) * static_cast<double>(n - 1) / 2.0;
+    benchmark::DoNotOptimize(std::sqrt((sum_sq - sum * sum / pairs) / (pairs - 1.0)));
+  }
+}
+
 }  // namespace
 
 BENCHMARK(BM_vrreg_register_rigid)->Arg(8)->Arg(1000)->Arg(9600)->Arg(1000000);
+BENCHMARK(BM_vrreg_register_rigid_no_residuals)->Arg(8)->Arg(1000)->Arg(9600)->Arg(1000000);
 BENCHMARK(BM_eigen_umeyama)->Arg(8)->Arg(1000)->Arg(9600)->Arg(1000000);
-BENCHMARK(BM_vrreg_sigma_l)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_vrreg_sigma_l)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+BENCHMARK(BM_naive_sigma_l)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -39,7 +39,10 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
     ++n_branches;
     double theta[7];
     detail::lwr_flip(base.theta, index, theta);
-    JointVector q(7);
+    // Filled in place (no copy of the solution); taken back when a joint misses its limits.
+    IkSolution& solution = result.solutions.emplace_back();
+    JointVector& q = solution.q_rad;
+    q.resize(7);
     bool inside = true;
     for (int i = 0; i < 7; ++i) {
       q(i) = g.offset[i] == 0.0 ? theta[i] : wrap_angle(theta[i] - g.offset[i]);
@@ -48,10 +51,12 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
       }
     }
     if (!inside) {
+      result.solutions.pop_back();
       ++result.n_outside_limits;
       continue;
     }
-    result.solutions.push_back({q, ConfigurationLabel(ArmKind::kLwr, index), base.singular});
+    solution.config = ConfigurationLabel(ArmKind::kLwr, index);
+    solution.singular = base.singular;
   }
   if (result.solutions.empty()) {
     result.status = IkStatus::kOutsideLimits;

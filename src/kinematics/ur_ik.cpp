@@ -193,7 +193,10 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
   for (int index = 0; index < 8; ++index) {
     const Branch& b = branches[index];
     if (!b.present) continue;
-    JointVector q(6);
+    // Filled in place (no copy of the solution); taken back when a joint misses its limits.
+    IkSolution& solution = result.solutions.emplace_back();
+    JointVector& q = solution.q_rad;
+    q.resize(6);
     bool inside = true;
     for (int i = 0; i < 6; ++i) {
       q(i) = wrap_angle(b.theta[i] - g.offset[i]);
@@ -202,10 +205,12 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
       }
     }
     if (!inside) {
+      result.solutions.pop_back();
       ++result.n_outside_limits;
       continue;
     }
-    result.solutions.push_back({q, ConfigurationLabel(ArmKind::kUr, index), b.singular});
+    solution.config = ConfigurationLabel(ArmKind::kUr, index);
+    solution.singular = b.singular;
   }
   if (result.solutions.empty()) {
     result.status = IkStatus::kOutsideLimits;
