@@ -37,7 +37,7 @@ struct RegisterKwargs {
     RegisterOptions o;
     o.config = config;
     o.registration.estimate_scale = scale;
-    if (robust) o.robust = RobustRegistrationOptions{};
+    if (robust) o.robust = OutlierOptions{};
     o.sigma_rep_m = sigma_rep_m;
     o.rigid_body_statistics = rigid_body;
     o.interpolation = interpolation_choice(interpolation, cube_edge_m).apply({});

@@ -177,7 +177,7 @@ TEST_F(FrontDoor, RobustNamesASwappedMarker) {
   for (int j = 0; j < 125; ++j) fiducials.names.push_back("F" + std::to_string(j));
   fiducials.sensor_m.col(3).swap(fiducials.sensor_m.col(80));
   RegisterOptions options;
-  options.robust = RobustRegistrationOptions{};
+  options.robust = OutlierOptions{};
   const RegisterResult r = register_fiducials(fiducials, options);
   EXPECT_EQ(r.rejected, (std::vector<std::string>{"F3", "F80"}));
   EXPECT_EQ(r.model.fiducials.size(), 123u);
