@@ -48,7 +48,7 @@ RegisterOptions register_options(const RegisterArgs& args) {
 }
 
 // The robust check: its scale and bound, then each rejected fiducial with its deviation.
-nlohmann::json robust_json(const RobustReport& report) {
+nlohmann::json robust_json(const RobustReport& report, double false_alarm_rate) {
   const OutlierDetection& d = report.detection;
   nlohmann::json j;
   j["method"] = "leave-one-out affine prediction from neighbours of the same configuration";
@@ -56,6 +56,9 @@ nlohmann::json robust_json(const RobustReport& report) {
   j["sigma_mm"] = units::m_to_mm(d.sigma_m);
   j["scale"] = d.scale_is_noise ? "sigma_noise" : "spread";
   j["sigma_spread_mm"] = units::m_to_mm(d.sigma_spread_m);
+  j["sigma_noise_mm"] =
+      d.sigma_noise_m ? nlohmann::json(units::m_to_mm(*d.sigma_noise_m)) : nlohmann::json(nullptr);
+  j["false_alarm_rate"] = false_alarm_rate;
   j["threshold_sigmas"] = d.threshold_sigmas;
   j["outliers"] = nlohmann::json::array();
   for (const RejectedFiducial& r : report.rejected) {
@@ -124,7 +127,7 @@ void run_register_unchecked(const RegisterArgs& args) {
     if (sigma_noise) j["sigma_noise_mm"] = units::m_to_mm(*sigma_noise);
     if (rho_value) j["rho"] = *rho_value;
     j["rejected"] = rejected;
-    if (result.robust) j["robust"] = robust_json(*result.robust);
+    if (result.robust) j["robust"] = robust_json(*result.robust, options.robust->false_alarm_rate);
     j["model"] = args.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(args.output);
     add_strategy_json(j, model, relabelled);
     print_json(j);

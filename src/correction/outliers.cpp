@@ -13,6 +13,9 @@ namespace {
 
 using detail::LooStencil;
 
+// Rounds of rejection and re-admission (a bound on cycling; one round is the rule).
+constexpr int kMaxRounds = 5;
+
 // Median of the chi-square distribution with 3 degrees of freedom.
 constexpr double kChiSquare3Median = 2.365973884375;
 
@@ -130,41 +133,69 @@ OutlierDetection detect_outlier_fiducials(const ConstPoints3Ref& fiducials_robot
   const auto max_outliers =
       static_cast<std::size_t>(options.max_outlier_fraction * static_cast<double>(n));
   std::vector<Eigen::Index> rejected;
-  for (out.iterations = 1;; ++out.iterations) {
-    std::vector<double> reduced;
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const Judgement& g = judged[static_cast<std::size_t>(j)];
-      if (inlier[static_cast<std::size_t>(j)] && g.stencil.ok) reduced.push_back(g.reduced_sq_m2);
-    }
-    out.sigma_spread_m = std::sqrt(median(reduced) / kChiSquare3Median);
-    out.scale_is_noise = sigma_noise_m && *sigma_noise_m >= out.sigma_spread_m;
-    out.sigma_m = out.scale_is_noise ? *sigma_noise_m : out.sigma_spread_m;
-    // The worst inlier beyond the bound (and beyond min_deviation_m), if any.
-    Eigen::Index worst = -1;
-    double worst_t = bound;
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const Judgement& g = judged[static_cast<std::size_t>(j)];
-      if (!inlier[static_cast<std::size_t>(j)] || !g.stencil.ok) continue;
-      if (g.deviation_m.norm() <= options.min_deviation_m) continue;
-      const double t = out.sigma_m > 0.0 ? g.reduced_sq_m2 / (out.sigma_m * out.sigma_m)
-                                         : std::numeric_limits<double>::infinity();
-      if (t > worst_t) {
-        worst_t = t;
-        worst = j;
-      }
-    }
-    if (worst < 0) break;
-    if (rejected.size() + 1 > max_outliers) {
-      out.message = "more than " + std::to_string(static_cast<int>(100 * options.max_outlier_fraction)) +
-                    "% of the fiducials disagree with their neighbours: no consistent correction field";
-      return out;
-    }
-    inlier[static_cast<std::size_t>(worst)] = false;
-    rejected.push_back(worst);
-    for (const Eigen::Index j : used_by[static_cast<std::size_t>(worst)]) {
+  const auto rejudge_users = [&](Eigen::Index k) {
+    for (const Eigen::Index j : used_by[static_cast<std::size_t>(k)]) {
       judged[static_cast<std::size_t>(j)] = judge(fiducials_robot_m, corrections_sensor_m, j,
                                                   neighbours[static_cast<std::size_t>(j)], inlier);
     }
+  };
+  const auto t_of = [&](const Judgement& g) {
+    if (g.deviation_m.norm() <= options.min_deviation_m) return 0.0;
+    return out.sigma_m > 0.0 ? g.reduced_sq_m2 / (out.sigma_m * out.sigma_m)
+                             : std::numeric_limits<double>::infinity();
+  };
+  out.iterations = 0;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    // Worst first: reject the worst inlier beyond the bound, judge its users again, repeat.
+    for (;; ++out.iterations) {
+      std::vector<double> reduced;
+      for (Eigen::Index j = 0; j < n; ++j) {
+        const Judgement& g = judged[static_cast<std::size_t>(j)];
+        if (inlier[static_cast<std::size_t>(j)] && g.stencil.ok) reduced.push_back(g.reduced_sq_m2);
+      }
+      out.sigma_spread_m = std::sqrt(median(reduced) / kChiSquare3Median);
+      out.scale_is_noise = sigma_noise_m && *sigma_noise_m >= out.sigma_spread_m;
+      out.sigma_m = out.scale_is_noise ? *sigma_noise_m : out.sigma_spread_m;
+      Eigen::Index worst = -1;
+      double worst_t = bound;
+      for (Eigen::Index j = 0; j < n; ++j) {
+        const Judgement& g = judged[static_cast<std::size_t>(j)];
+        if (!inlier[static_cast<std::size_t>(j)] || !g.stencil.ok) continue;
+        const double t = t_of(g);
+        if (t > worst_t) {
+          worst_t = t;
+          worst = j;
+        }
+      }
+      if (worst < 0) break;
+      if (rejected.size() + 1 > max_outliers) {
+        out.message = "more than " +
+                      std::to_string(static_cast<int>(100 * options.max_outlier_fraction)) +
+                      "% of the fiducials disagree with their neighbours: no consistent "
+                      "correction field";
+        return out;
+      }
+      inlier[static_cast<std::size_t>(worst)] = false;
+      rejected.push_back(worst);
+      rejudge_users(worst);
+    }
+    // Re-admission: a fiducial rejected while a worse neighbour still spoiled its prediction may
+    // agree with its clean neighbours after all.
+    bool readmitted = false;
+    for (auto it = rejected.begin(); it != rejected.end();) {
+      Judgement g = judge(fiducials_robot_m, corrections_sensor_m, *it,
+                          neighbours[static_cast<std::size_t>(*it)], inlier);
+      if (g.stencil.ok && t_of(g) <= bound) {
+        inlier[static_cast<std::size_t>(*it)] = true;
+        judged[static_cast<std::size_t>(*it)] = std::move(g);
+        rejudge_users(*it);
+        it = rejected.erase(it);
+        readmitted = true;
+      } else {
+        ++it;
+      }
+    }
+    if (!readmitted) break;
   }
   out.converged = true;
   std::sort(rejected.begin(), rejected.end());

@@ -18,6 +18,8 @@
 //     judged fiducials loses any with probability a (false_alarm_rate).
 //  4. Iteration: the worst fiducial beyond the bound is rejected and its neighbours predicted
 //     again without it (a gross outlier contaminates its neighbours' predictions), until none is.
+//     Then any rejected fiducial within the bound against its inlier neighbours is re-admitted
+//     (it was spoiled by a worse one), and the two steps repeat until nothing changes.
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -61,7 +63,7 @@ struct OutlierDetection {
   bool scale_is_noise = false;            ///< sigma_m is sigma_noise (else the spread)
   double threshold_sigmas = 0.0;          ///< sqrt of the chi-square bound on t_j
   int n_judged = 0;  ///< fiducials with enough neighbours to be judged (the J of the bound)
-  int iterations = 0;
+  int iterations = 0;  ///< worst-first rejections made (re-admitted ones included)
   bool converged = false;  ///< false: more than max_outlier_fraction rejected
   std::string message;     ///< why not converged
 };
