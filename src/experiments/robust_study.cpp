@@ -68,6 +68,8 @@ RobustStudyCell run_cell(const MeasurementSet& clean, std::uint64_t seed, Robust
   cell.robust_cor_rms_t_m = evaluate(r.model, set).summary.cor_rms_t_m;
   cell.sigma_m = r.robust->detection.sigma_m;
   cell.scale_is_noise = r.robust->detection.scale_is_noise;
+  cell.sigma_noise_m = r.robust->detection.sigma_noise_m.value_or(0.0);
+  cell.threshold_sigmas = r.robust->detection.threshold_sigmas;
   cell.found = true;
   cell.planted_sigmas = std::numeric_limits<double>::infinity();
   for (const std::string& name : cell.planted) {
@@ -81,6 +83,7 @@ RobustStudyCell run_cell(const MeasurementSet& clean, std::uint64_t seed, Robust
   }
   if (!cell.found || cell.planted.empty()) cell.planted_sigmas = 0.0;
   for (const RejectedFiducial& f : r.robust->rejected) {
+    (f.filled ? cell.filled : cell.dropped) += 1;
     if (std::find(cell.planted.begin(), cell.planted.end(), f.point) == cell.planted.end()) {
       ++cell.good_rejected;
     }
@@ -163,7 +166,7 @@ std::string robust_study_text(const RobustStudy& study) {
       if (!c.planted.empty() && c.found) min_sigmas = std::min(min_sigmas, c.planted_sigmas);
     }
     const auto rate = [n](int k) {
-      return fmt::format("{}/{} ({:.0f}%)", k, n, 100.0 * k / std::max(n, 1));
+      return fmt::format("{}/{} ({:.1f}%)", k, n, 100.0 * k / std::max(n, 1));
     };
     table.add({to_string(scenario), std::to_string(n),
                scenario == RobustScenario::kClean ? "-" : rate(found), rate(clean),
@@ -174,15 +177,26 @@ std::string robust_study_text(const RobustStudy& study) {
   }
   out += table.str();
   double sigma_min = std::numeric_limits<double>::infinity(), sigma_max = 0.0;
-  int from_noise = 0;
+  double noise_min = sigma_min, noise_max = 0.0, bound = 0.0;
+  int from_noise = 0, filled = 0, dropped = 0;
   for (const RobustStudyCell& c : study.cells) {
     sigma_min = std::min(sigma_min, c.sigma_m);
     sigma_max = std::max(sigma_max, c.sigma_m);
+    noise_min = std::min(noise_min, c.sigma_noise_m);
+    noise_max = std::max(noise_max, c.sigma_noise_m);
+    bound = std::max(bound, c.threshold_sigmas);
     from_noise += c.scale_is_noise ? 1 : 0;
+    filled += c.filled;
+    dropped += c.dropped;
   }
-  out += fmt::format("  scale sigma {:.4f}..{:.4f} mm; sigma_noise used in {} of {} cells, the "
-                     "spread of the deviations in the rest\n",
-                     sigma_min * 1e3, sigma_max * 1e3, from_noise, study.cells.size());
+  out += fmt::format("  bound {:.2f} sigma; sigma_noise {:.4f}..{:.4f} mm; scale sigma {:.4f}..{:.4f} "
+                     "mm: sigma_noise in {} of {} cells, the spread of the deviations in the "
+                     "rest\n",
+                     bound, noise_min * 1e3, noise_max * 1e3, sigma_min * 1e3, sigma_max * 1e3,
+                     from_noise, study.cells.size());
+  out += fmt::format("  rejected fiducials: {} filled from neighbours (grid kept complete), {} "
+                     "dropped\n",
+                     filled, dropped);
   return out;
 }
 

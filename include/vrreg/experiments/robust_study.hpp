@@ -34,6 +34,10 @@ struct RobustStudyCell {
   int good_rejected = 0;              ///< rejected fiducials that were not planted
   double planted_sigmas = 0.0;        ///< smallest deviation of a planted one, in sigmas (if found)
   double sigma_m = 0.0;               ///< the scale the check used
+  double sigma_noise_m = 0.0;         ///< sigma_noise (Eq. 9) of the cell; 0 when unknown
+  double threshold_sigmas = 0.0;      ///< the bound
+  int filled = 0;                     ///< rejected fiducials kept with their neighbours' correction
+  int dropped = 0;                    ///< rejected fiducials dropped (too few neighbours)
   bool scale_is_noise = false;
   double plain_cor_rms_t_m = 0.0;     ///< corrected RMS_T registered without --robust
   double robust_cor_rms_t_m = 0.0;    ///< corrected RMS_T with --robust
