@@ -1,6 +1,8 @@
 #include "loo_stencil.hpp"
 
 #include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "point_index.hpp"

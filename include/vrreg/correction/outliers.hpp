@@ -35,7 +35,7 @@ struct OutlierOptions {
   int neighbours = 26;             ///< nearest fiducials of the same group for the LOO fit
   double min_deviation_m = 1e-6;   ///< a deviation this small is never an outlier [m]
   double max_outlier_fraction = 0.25;  ///< beyond this the set is called unusable
-  /// Throws InputError on a rate outside (0, 1), fewer than 5 neighbours, a negative deviation or
+  /// Throws InputError on a rate outside (0, 1), fewer than 6 neighbours, a negative deviation or
   /// a fraction outside (0, 1).
   void validate() const;
 };
