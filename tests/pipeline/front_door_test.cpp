@@ -187,7 +187,7 @@ TEST_F(FrontDoor, RobustNamesASwappedMarker) {
   ASSERT_EQ(r.robust->rejected.size(), 2u);
   for (const RejectedFiducial& f : r.robust->rejected) {
     EXPECT_TRUE(f.filled);
-    EXPECT_GT(f.deviation_m, 0.05);  // the two markers are 4 or more grid steps of 50 mm apart
+    EXPECT_GT(f.deviation_m, 0.05);  // the swapped markers lie more than 50 mm apart
     EXPECT_GT(f.sigmas, r.robust->detection.threshold_sigmas);
   }
   // The filled fiducials' corrections agree with Eq. 6 for the sensor reading stored with them.
