@@ -41,12 +41,55 @@ RegisterOptions register_options(const RegisterArgs& args) {
   RegisterOptions options;
   options.config = args.config;
   options.registration.estimate_scale = args.scale;
-  if (args.robust) options.robust = RobustRegistrationOptions{};
+  if (args.robust) options.robust = OutlierOptions{};
   if (args.sigma_rep_mm) options.sigma_rep_m = units::mm_to_m(*args.sigma_rep_mm);
   options.interpolation = args.interpolation.settings();
   options.procedure2 = register_procedure2(args.strategy);
   options.sigma_l.force_exact = args.exact_sigma_l;
   return options;
+}
+
+// The robust check: its scale and bound, then each rejected fiducial with its deviation.
+nlohmann::json robust_json(const RobustReport& report, double false_alarm_rate) {
+  const OutlierDetection& d = report.detection;
+  nlohmann::json j;
+  j["method"] = "leave-one-out affine prediction from neighbours of the same configuration";
+  j["judged"] = d.n_judged;
+  j["sigma_mm"] = units::m_to_mm(d.sigma_m);
+  j["scale"] = d.scale_is_noise ? "sigma_noise" : "spread";
+  j["sigma_spread_mm"] = units::m_to_mm(d.sigma_spread_m);
+  j["sigma_noise_mm"] =
+      d.sigma_noise_m ? nlohmann::json(units::m_to_mm(*d.sigma_noise_m)) : nlohmann::json(nullptr);
+  j["false_alarm_rate"] = false_alarm_rate;
+  j["threshold_sigmas"] = d.threshold_sigmas;
+  j["outliers"] = nlohmann::json::array();
+  for (const RejectedFiducial& r : report.rejected) {
+    nlohmann::json o;
+    o["point"] = r.point;
+    o["config"] = r.config ? nlohmann::json(*r.config) : nlohmann::json(nullptr);
+    o["deviation_mm"] = units::m_to_mm(r.deviation_m);
+    o["sigmas"] = r.sigmas;
+    o["handling"] = r.filled ? "filled from neighbours" : "dropped";
+    j["outliers"].push_back(o);
+  }
+  return j;
+}
+
+void print_robust(const RobustReport& report) {
+  const OutlierDetection& d = report.detection;
+  std::printf("  robust check                  %zu outlier%s of %d fiducials judged "
+              "(bound %.2f sigma, sigma = %s mm from %s)\n",
+              report.rejected.size(), report.rejected.size() == 1 ? "" : "s", d.n_judged,
+              d.threshold_sigmas, format_mm(d.sigma_m).c_str(),
+              d.scale_is_noise ? "sigma_noise" : "the spread of the deviations");
+  for (const RejectedFiducial& r : report.rejected) {
+    std::printf("    %-27s %s mm = %.1f sigma off its neighbours' prediction; %s\n",
+                (r.point + (r.config ? " (config " + std::to_string(*r.config) + ")" : "")).c_str(),
+                format_mm(r.deviation_m).c_str(), r.sigmas,
+                r.filled ? "correction filled from neighbours"
+                         : "dropped (too few neighbours): grid interpolation falls back to "
+                           "scattered");
+  }
 }
 
 void run_register_unchecked(const RegisterArgs& args) {
@@ -57,7 +100,7 @@ void run_register_unchecked(const RegisterArgs& args) {
   const RegistrationModel& model = result.model;
   const RegistrationResult& reg = result.registration;
   const RigidBodyStatistics& rb = result.rigid_body;
-  const std::vector<std::string>& rejected = result.rejected;
+  const std::vector<std::string>& rejected = result.rejected;  // names, also in result.robust
   const std::optional<planning::Strategy2Summary>& relabelled = result.relabelled;
   const std::size_t n_registered = result.n_registered;
   const std::optional<double>& sigma_opt = result.noise.sigma_opt_m;
@@ -95,6 +138,7 @@ void run_register_unchecked(const RegisterArgs& args) {
     if (sigma_noise) j["sigma_noise_mm"] = units::m_to_mm(*sigma_noise);
     if (rho_value) j["rho"] = *rho_value;
     j["rejected"] = rejected;
+    if (result.robust) j["robust"] = robust_json(*result.robust, options.robust->false_alarm_rate);
     j["model"] = args.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(args.output);
     add_strategy_json(j, model, relabelled);
     print_json(j);
@@ -142,11 +186,7 @@ void run_register_unchecked(const RegisterArgs& args) {
                 args.sigma_rep_mm ? "" : "; an upper bound without --sigma-rep-mm");
   }
   std::printf("  spread (principal axes)       %s mm\n", format_mm3(reg.spread_m, 1).c_str());
-  if (!rejected.empty()) {
-    std::printf("  rejected as outliers          %zu:", rejected.size());
-    for (const auto& p : rejected) std::printf(" %s", p.c_str());
-    std::printf("\n");
-  }
+  if (result.robust) print_robust(*result.robust);
   if (!args.output.empty()) std::printf("  model written to %s\n", args.output.c_str());
 }
 
@@ -161,7 +201,9 @@ void add_register_command(CLI::App& app) {
   cmd->add_option("--config", args->config, "use only rows with this configuration label");
   cmd->add_flag("--scale", args->scale, "also fit a uniform scale (off in the paper)");
   cmd->add_flag("--robust", args->robust,
-                "reject gross outliers (swapped markers): residual > 5 robust sigma");
+                "find fiducials whose correction disagrees with their neighbours' (a displaced or "
+                "swapped marker), register without them and fill their corrections from the "
+                "neighbours (docs/outliers.md)");
   cmd->add_option("--sigma-rep-mm", args->sigma_rep_mm,
                   "robot repeatability in mm, for sigma_noise and rho (UR5 0.1, LWR 4+ 0.05)")
       ->check(CLI::NonNegativeNumber);

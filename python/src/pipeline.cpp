@@ -37,7 +37,7 @@ struct RegisterKwargs {
     RegisterOptions o;
     o.config = config;
     o.registration.estimate_scale = scale;
-    if (robust) o.robust = RobustRegistrationOptions{};
+    if (robust) o.robust = OutlierOptions{};
     o.sigma_rep_m = sigma_rep_m;
     o.rigid_body_statistics = rigid_body;
     o.interpolation = interpolation_choice(interpolation, cube_edge_m).apply({});
@@ -76,7 +76,9 @@ robot: (N, 3) nominal positions, robot frame, METRES.
 weights (N,), names (N labels), configs (N,) ints, joints (N, n) [rad], n_readings (N,) and
   sensor_sq_dev (N, 3) [m^2]: optional per-point extras (see vrreg::MeasuredPoints).
 config: use only this configuration label. scale: also fit a uniform scale (not the paper's).
-robust: reject gross outliers first. sigma_rep: robot repeatability [m] for sigma_noise and rho.
+robust: reject fiducials whose correction disagrees with their neighbours' (a displaced or
+  swapped marker; result.outliers) and fill them from the neighbours.
+sigma_rep: robot repeatability [m] for sigma_noise and rho.
 interpolation: 'auto', 'grid', 'scattered' or 'octuplet' (stored as evaluate's and correct's
   default); cube_edge: octuplet cube edge [m]. strategy: Procedure 2 strategy 0-3 (section 4.4),
   joint_norm 'l2' or 'linf', seed (strategy 3). rigid_body=False skips sigma_L, which costs

@@ -148,6 +148,24 @@ void bind_results(py::module_& m) {
       .def_property_readonly(
           "rejected", [](const RegisterResult& r) { return r.rejected; },
           "robust: names of the rejected fiducials")
+      .def_property_readonly(
+          "outliers",
+          [](const RegisterResult& r) {
+            py::list out;
+            if (!r.robust) return out;
+            for (const RejectedFiducial& f : r.robust->rejected) {
+              py::dict d;
+              d["point"] = f.point;
+              d["config"] = f.config ? py::object(py::int_(*f.config)) : py::object(py::none());
+              d["deviation"] = f.deviation_m;
+              d["sigmas"] = f.sigmas;
+              d["filled"] = f.filled;
+              out.append(d);
+            }
+            return out;
+          },
+          "robust: per rejected fiducial a dict: point, config, deviation [m] from its "
+          "neighbours' prediction, sigmas, filled (kept with its neighbours' correction)")
       .def_property_readonly("n_registered", [](const RegisterResult& r) { return r.n_registered; })
       .def_property_readonly(
           "rotation",

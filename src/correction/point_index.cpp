@@ -1,5 +1,6 @@
 #include "point_index.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <nanoflann.hpp>
 
@@ -47,6 +48,15 @@ Eigen::Index PointIndex::nearest(const Eigen::Vector3d& query_m) const {
   double distance_sq = 0.0;
   impl_->tree.knnSearch(query_m.data(), 1, &index, &distance_sq);
   return static_cast<Eigen::Index>(index);
+}
+
+std::vector<Eigen::Index> PointIndex::nearest_k(const Eigen::Vector3d& query_m,
+                                                std::size_t k) const {
+  k = std::min(k, static_cast<std::size_t>(impl_->cloud.points.cols()));
+  std::vector<std::size_t> index(k);
+  std::vector<double> distance_sq(k);
+  k = impl_->tree.knnSearch(query_m.data(), k, index.data(), distance_sq.data());
+  return {index.begin(), index.begin() + static_cast<std::ptrdiff_t>(k)};
 }
 
 std::vector<Eigen::Index> PointIndex::within(const Eigen::Vector3d& query_m,

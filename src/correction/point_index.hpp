@@ -21,6 +21,9 @@ class PointIndex {
 
   /// Column of the point nearest to `query_m` (the index must not be empty).
   [[nodiscard]] Eigen::Index nearest(const Eigen::Vector3d& query_m) const;
+  /// Columns of the min(k, size) points nearest to `query_m`, nearest first.
+  [[nodiscard]] std::vector<Eigen::Index> nearest_k(const Eigen::Vector3d& query_m,
+                                                    std::size_t k) const;
   /// Columns of all points within `radius_m` of `query_m`, nearest first.
   [[nodiscard]] std::vector<Eigen::Index> within(const Eigen::Vector3d& query_m,
                                                  double radius_m) const;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "procedure2_steps.hpp"
+#include "robust_rows.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
@@ -26,7 +27,7 @@ Eigen::VectorXd weights_of(const MeasurementSet& set, const std::vector<std::siz
 }
 
 // Registers the fiducial rows (of one configuration with options.config): no strategy, 1 or 2.
-// Fills the model, the fit, the registered points and the rejected names.
+// Fills the model, the fit, the registered points and the robust report.
 void register_rows(const MeasurementSet& set, const RegisterOptions& options, RegisterResult& out,
                    Points3& sensor, Points3& robot) {
   const std::vector<std::size_t> rows =
@@ -37,30 +38,23 @@ void register_rows(const MeasurementSet& set, const RegisterOptions& options, Re
   model.interpolation = options.interpolation;
 
   std::vector<std::size_t> kept = rows;
+  std::optional<pipeline_detail::RobustRows> robust;
   if (options.robust) {
-    sensor = set.sensor_points(rows);
-    robot = set.robot_points(rows);
-    RobustRegistrationOptions robust = *options.robust;
-    robust.registration = options.registration;
-    const RobustRegistrationResult r = register_rigid_robust(sensor, robot, robust);
-    if (!r.converged) fail(set, "robust registration failed: " + r.message);
-    kept.clear();
-    std::size_t next_rejected = 0;
-    for (std::size_t k = 0; k < rows.size(); ++k) {
-      if (next_rejected < r.rejected.size() &&
-          r.rejected[next_rejected] == static_cast<Eigen::Index>(k)) {
-        out.rejected.push_back(set.locations[rows[k]].point);
-        ++next_rejected;
-      } else {
-        kept.push_back(rows[k]);
-      }
-    }
+    robust = pipeline_detail::robust_rows(set, rows, options);
+    kept = robust->registered;
+    for (const RejectedFiducial& r : robust->report.rejected) out.rejected.push_back(r.point);
   }
   sensor = set.sensor_points(kept);
   robot = set.robot_points(kept);
   out.registration = register_rigid(sensor, robot, options.registration, weights_of(set, kept));
   model.T_robot_sensor = out.registration.T_robot_sensor;
   model.fre_m = out.registration.fre_m;
+  if (robust) {
+    // Rejected fiducials keep their place with their neighbours' correction (a grid stays whole).
+    pipeline_detail::fill_model_fiducials(set, rows, robust->report, model.T_robot_sensor, model);
+    out.robust = std::move(robust->report);
+    return;
+  }
   model.fiducials = pipeline_detail::locations_of(set, kept);
   model.corrections_sensor_m = fiducial_corrections(model.T_robot_sensor, sensor, robot);  // Eq. 6
 }

@@ -177,10 +177,24 @@ TEST_F(FrontDoor, RobustNamesASwappedMarker) {
   for (int j = 0; j < 125; ++j) fiducials.names.push_back("F" + std::to_string(j));
   fiducials.sensor_m.col(3).swap(fiducials.sensor_m.col(80));
   RegisterOptions options;
-  options.robust = RobustRegistrationOptions{};
+  options.robust = OutlierOptions{};
   const RegisterResult r = register_fiducials(fiducials, options);
   EXPECT_EQ(r.rejected, (std::vector<std::string>{"F3", "F80"}));
-  EXPECT_EQ(r.model.fiducials.size(), 123u);
+  // Both keep their place with their neighbours' correction: the 5^3 grid stays complete.
+  EXPECT_EQ(r.n_registered, 123u);
+  EXPECT_EQ(r.model.fiducials.size(), 125u);
+  ASSERT_TRUE(r.robust);
+  ASSERT_EQ(r.robust->rejected.size(), 2u);
+  for (const RejectedFiducial& f : r.robust->rejected) {
+    EXPECT_TRUE(f.filled);
+    EXPECT_GT(f.deviation_m, 0.05);  // the swapped markers lie more than 50 mm apart
+    EXPECT_GT(f.sigmas, r.robust->detection.threshold_sigmas);
+  }
+  // The filled fiducials' corrections agree with Eq. 6 for the sensor reading stored with them.
+  const Points3 eps = fiducial_corrections(r.model.T_robot_sensor,
+                                           Points3(r.model.fiducials[3].sensor_m),
+                                           Points3(r.model.fiducials[3].robot_m));
+  EXPECT_EIGEN_NEAR(eps.col(0), Eigen::Vector3d(r.model.corrections_sensor_m.col(3)), 1e-12);
 }
 
 TEST_F(FrontDoor, ScaleMakesASimilarityThatIsNotRigid) {

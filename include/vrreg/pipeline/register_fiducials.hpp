@@ -9,6 +9,7 @@
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/correction/interpolation.hpp"
+#include "vrreg/correction/outliers.hpp"
 #include "vrreg/metrics/noise.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
 #include "vrreg/metrics/rigid_body_sampled.hpp"
@@ -17,7 +18,6 @@
 #include "vrreg/planning/procedure2.hpp"
 #include "vrreg/planning/strategy2_labels.hpp"
 #include "vrreg/registration/rigid.hpp"
-#include "vrreg/registration/robust.hpp"
 
 namespace vrreg {
 
@@ -25,8 +25,10 @@ namespace vrreg {
 struct RegisterOptions {
   std::optional<int> config;  ///< register only the fiducials with this configuration label
   RegistrationOptions registration;  ///< e.g. estimate_scale: a similarity instead (not the paper)
-  /// Reject gross outliers (a swapped marker) before registering: register_rigid_robust.
-  std::optional<RobustRegistrationOptions> robust;
+  /// Find fiducials whose correction disagrees with their neighbours' (a displaced or swapped
+  /// marker; correction/outliers.hpp), register without them and fill their corrections from the
+  /// neighbours. The noise scale is sigma_noise (Eq. 9) of these fiducials and sigma_rep_m.
+  std::optional<OutlierOptions> robust;
   std::optional<double> sigma_rep_m;  ///< robot repeatability for sigma_noise and rho (Eq. 9) [m]
   bool rigid_body_statistics = true;  ///< sigma_L over all pairs (Eq. 1); off: sigma_L = 0
   /// Above sigma_l.exact_max_points fiducials sigma_L is sampled (result and model say so).
@@ -39,6 +41,23 @@ struct RegisterOptions {
   void validate() const;
 };
 
+/// A fiducial the robust check rejected, by name.
+struct RejectedFiducial {
+  std::string point;
+  std::optional<int> config;
+  double deviation_m = 0.0;  ///< |eps_j - its neighbours' prediction| (Eq. 6 correction) [m]
+  double sigmas = 0.0;       ///< the same in standard deviations of that difference
+  /// true: kept in the model with the correction its neighbours predict (a grid stays complete);
+  /// false: too few neighbours, dropped (grid interpolation may then fall back to scattered).
+  bool filled = false;
+};
+
+/// What the robust check found (RegisterOptions::robust).
+struct RobustReport {
+  OutlierDetection detection;  ///< scale, bound, fiducials judged (columns: the fiducial rows)
+  std::vector<RejectedFiducial> rejected;  ///< in file order
+};
+
 /// What register_fiducials found, besides the model.
 struct RegisterResult {
   RegistrationModel model;
@@ -48,6 +67,7 @@ struct RegisterResult {
   SigmaLSampling sigma_l_sampling;  ///< exact (all pairs) or sampled, with its interval
   NoiseFigures noise;               ///< sigma_opt, sigma_noise, rho (Eq. 9)
   std::vector<std::string> rejected;  ///< robust: names of the rejected fiducials
+  std::optional<RobustReport> robust;  ///< robust: the outliers, their deviations, the scale
   std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2: what was relabelled
 };
 

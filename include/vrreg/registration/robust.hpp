@@ -1,6 +1,9 @@
 #pragma once
 // Outlier-robust registration: finds fiducials that break the rigid-body condition grossly (a
-// swapped or mislabelled marker) and registers without them.
+// swapped or mislabelled marker) and registers without them. For point sets without a correction
+// field: residuals against one rigid fit hold the robot's systematic error, so the front door's
+// `--robust` judges fiducials against their neighbours' corrections instead
+// (correction/outliers.hpp, docs/outliers.md).
 //
 // Method (documented threshold):
 //  1. Seed: each point's score is the median over up to 64 reference points of |L_ij| (Eq. 1),
