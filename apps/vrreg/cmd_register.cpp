@@ -6,6 +6,7 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "marker_offset_cli.hpp"
 #include "strategy_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
@@ -26,6 +27,7 @@ struct RegisterArgs {
   StrategyFlags strategy;
   std::string output;
   bool json = false;
+  MarkerOffsetFlags marker_offset;
 };
 
 void run_register_unchecked(const RegisterArgs& args);
@@ -50,6 +52,12 @@ RegisterOptions register_options(const RegisterArgs& args) {
 void run_register_unchecked(const RegisterArgs& args) {
   const RegisterOptions options = register_options(args);
   options.validate();  // flag combinations before reading the file
+  args.marker_offset.check();
+  if (args.marker_offset.enabled()) {  // hand-eye registration: its own report (marker_offset_cli)
+    run_register_with_marker_offset(args.fiducials, args.marker_offset, options, args.output,
+                                    args.json);
+    return;
+  }
   const RegisterResult result =
       register_fiducials(io::read_measurement_csv(args.fiducials), options);
   const RegistrationModel& model = result.model;
@@ -146,6 +154,7 @@ void add_register_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   args->interpolation.add_to(*cmd);
   args->strategy.add_to(*cmd, true);
+  args->marker_offset.add_to(*cmd);
   add_output_option(*cmd, "-o,--output", args->output, "write the model (JSON) here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_register(*args); });

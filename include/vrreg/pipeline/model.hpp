@@ -10,6 +10,7 @@
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/correction/interpolation.hpp"
+#include "vrreg/pipeline/marker_offset_model.hpp"
 #include "vrreg/planning/procedure2.hpp"
 
 namespace vrreg {
@@ -29,6 +30,9 @@ struct RegistrationModel {
   double sigma_l_m = 0.0;            ///< sigma_L over the registered fiducial pairs (Eq. 1)
   std::optional<double> sigma_rep_m;  ///< robot repeatability given when building (Eq. 9) [m]
   std::string source;                ///< the fiducial file (or "arrays") it came from
+  /// Hand-eye registration (register_with_marker_offset): the estimated marker offset; the
+  /// fiducials' robot positions and every target's come from forward kinematics with it.
+  std::optional<MarkerOffsetModel> marker_offset;
 
   /// What RRBC interpolates (Eq. 6-8): the transform, fiducial positions, corrections, order.
   [[nodiscard]] CorrectionField correction_field() const;
