@@ -25,6 +25,13 @@ void MarkerOffsetFlags::add_to(CLI::App& command) {
           "from the joints by FK with it (instead of the robot_*_mm columns); needs --robot")
       ->expected(3)
       ->excludes(flag);
+  command
+      .add_option("--joint-offset-sigma-deg", joint_offset_sigma_deg,
+                  "with --estimate-marker-offset: the robot's joint zero-offset uncertainty, deg "
+                  "(0.65 for the simulated ur5, 0.3 for lwr4; ~0.01 after a robot calibration); "
+                  "adds what the robot's own errors do to the offset to its stated uncertainty")
+      ->needs(flag)
+      ->check(CLI::Range(0.0, 10.0));
   command.add_option("--robot", robot,
                      "with --estimate-marker-offset or --marker-offset-mm: the robot whose joints "
                      "the file gives (ur3, ur5, ur10, ur5e, lwr4 or a robot file; its tool is "
@@ -53,6 +60,7 @@ void run_register_with_marker_offset(const std::string& fiducials_path,
   const kinematics::SerialChain robot = robot_from_args(flags.robot, {});
   MarkerOffsetOptions estimation;
   estimation.min_orientation_spread = flags.min_orientation_spread;
+  estimation.joint_offset_sigma_rad = units::deg_to_rad(flags.joint_offset_sigma_deg);
   const bool known = !flags.known_mm.empty();
   if (known) check_finite(flags.known_mm, "--marker-offset-mm");
   const MarkerOffsetRegisterResult result =
@@ -75,7 +83,9 @@ void run_register_with_marker_offset(const std::string& fiducials_path,
     j["robot"] = robot.name();
     j["n_fiducials"] = reg.n_registered;
     j["p_flange_marker_mm"] = json_mm3(e.p_flange_marker_m);
-    j["p_std_mm"] = json_mm3(e.p_std_m);
+    j["p_std_mm"] = json_mm3(result.p_std_total_m);
+    j["p_std_noise_mm"] = json_mm3(e.p_std_m);
+    j["p_std_joint_offsets_mm"] = json_mm3(result.p_std_joint_offsets_m);
     j["rotation"] = {
         {r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)}, {r(2, 0), r(2, 1), r(2, 2)}};
     j["translation_mm"] = json_mm3(reg.model.T_robot_sensor.translation_m);
@@ -101,10 +111,15 @@ void run_register_with_marker_offset(const std::string& fiducials_path,
   std::printf("  marker offset p_flange_marker %s mm  (marker in the flange frame)\n",
               format_mm3(e.p_flange_marker_m).c_str());
   if (!known) {
-    std::printf(
-        "  standard uncertainty          %s mm  (per flange axis; noise, not robot "
-        "kinematic error)\n",
-        format_mm3(e.p_std_m, 4).c_str());
+    std::printf("  standard uncertainty          %s mm  (per flange axis)\n",
+                format_mm3(result.p_std_total_m, 4).c_str());
+    std::printf("    from noise                  %s mm\n", format_mm3(e.p_std_m, 4).c_str());
+    const std::string sigma =
+        flags.joint_offset_sigma_deg > 0.0
+            ? "sigma " + format_fixed(flags.joint_offset_sigma_deg, 3) + " deg"
+            : "not given: --joint-offset-sigma-deg";
+    std::printf("    from joint zero offsets     %s mm  (%s)\n",
+                format_mm3(result.p_std_joint_offsets_m, 4).c_str(), sigma.c_str());
   }
   std::printf("  rotation R (sensor -> robot)  [% .9f % .9f % .9f]\n", r(0, 0), r(0, 1), r(0, 2));
   std::printf("                                [% .9f % .9f % .9f]\n", r(1, 0), r(1, 1), r(1, 2));

@@ -15,6 +15,7 @@ struct MarkerOffsetFlags {
   std::vector<double> known_mm;  ///< --marker-offset-mm: the offset given, not estimated
   std::string robot;
   double min_orientation_spread = 0.02;
+  double joint_offset_sigma_deg = 0.0;  ///< the robot's joint zero-offset uncertainty
   void add_to(CLI::App& command);
   /// Throws InputError on --robot without either mode.
   void check() const;

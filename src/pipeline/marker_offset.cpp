@@ -139,6 +139,40 @@ RegisterResult register_on_offset(const MeasurementSet& fiducials, const MarkerO
   return out;
 }
 
+// The uncertainty of p from joint zero-offset errors (sigma per joint, independent): the
+// estimate's sensitivity to the marker positions, (J'J)^-1 J', times their sensitivity to the
+// joint offsets (the FK Jacobian of the marker point), propagated as sigma^2 M M'.
+Eigen::Vector3d joint_offset_std(const MarkerOffsetResult& e,
+                                 const kinematics::SerialChain& flange_chain,
+                                 const MeasurementSet& fiducials,
+                                 const std::vector<std::size_t>& rows,
+                                 const std::vector<Eigen::Isometry3d>& flange, double sigma_rad) {
+  if (sigma_rad == 0.0) return Eigen::Vector3d::Zero();
+  const auto n = static_cast<Eigen::Index>(rows.size());
+  const int n_joints = flange_chain.n_joints();
+  const kinematics::SerialChain marker_chain =
+      flange_chain.with_tool(Eigen::Isometry3d(Eigen::Translation3d(e.p_flange_marker_m)));
+  Eigen::MatrixXd jac(3 * n, 9);
+  Eigen::MatrixXd g(3 * n, n_joints);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const Location& loc = fiducials.locations[rows[static_cast<std::size_t>(j)]];
+    const Eigen::Vector3d ry = e.T_robot_sensor.rotation * loc.sensor_m;
+    Eigen::Matrix3d skew;
+    skew << 0.0, -ry.z(), ry.y(), ry.z(), 0.0, -ry.x(), -ry.y(), ry.x(), 0.0;
+    jac.block<3, 3>(3 * j, 0) = -skew;
+    jac.block<3, 3>(3 * j, 3) = Eigen::Matrix3d::Identity();
+    jac.block<3, 3>(3 * j, 6) = -flange[static_cast<std::size_t>(j)].linear();
+    g.middleRows<3>(3 * j) =
+        kinematics::jacobian(marker_chain,
+                             joints_of(fiducials, rows[static_cast<std::size_t>(j)], n_joints))
+            .topRows<3>();
+  }
+  const Eigen::MatrixXd m = (jac.transpose() * jac).ldlt().solve(jac.transpose() * g);
+  const Eigen::Matrix3d cov =
+      sigma_rad * sigma_rad * (m.bottomRows<3>() * m.bottomRows<3>().transpose());
+  return cov.diagonal().cwiseMax(0.0).cwiseSqrt();
+}
+
 }  // namespace
 
 MarkerOffsetRegisterResult register_with_marker_offset(const MeasurementSet& fiducials,
@@ -158,10 +192,13 @@ MarkerOffsetRegisterResult register_with_marker_offset(const MeasurementSet& fid
   MarkerOffsetRegisterResult out;
   out.estimate = estimate_marker_offset(flange, fiducials.sensor_points(rows), estimation);
   if (!out.estimate.ok()) return out;
+  out.p_std_joint_offsets_m = joint_offset_std(out.estimate, flange_chain, fiducials, rows, flange,
+                                               estimation.joint_offset_sigma_rad);
+  out.p_std_total_m =
+      (out.estimate.p_std_m.cwiseAbs2() + out.p_std_joint_offsets_m.cwiseAbs2()).cwiseSqrt();
   out.registered = register_on_offset(
-      fiducials,
-      MarkerOffsetModel{out.estimate.p_flange_marker_m, out.estimate.p_std_m, flange_chain}, rows,
-      flange, options, out.offset_only);
+      fiducials, MarkerOffsetModel{out.estimate.p_flange_marker_m, out.p_std_total_m, flange_chain},
+      rows, flange, options, out.offset_only);
   return out;
 }
 

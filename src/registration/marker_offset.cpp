@@ -168,6 +168,9 @@ void MarkerOffsetOptions::validate() const {
   VRREG_THROW_UNLESS(
       std::isfinite(min_orientation_spread) && min_orientation_spread >= 0.0,
       "min_orientation_spread must be finite and >= 0, got " << min_orientation_spread);
+  VRREG_THROW_UNLESS(std::isfinite(joint_offset_sigma_rad) && joint_offset_sigma_rad >= 0.0,
+                     "joint_offset_sigma_rad must be finite and >= 0, got "
+                         << joint_offset_sigma_rad);
   VRREG_THROW_UNLESS(max_iterations >= 1, "max_iterations must be >= 1, got " << max_iterations);
   VRREG_THROW_UNLESS(std::isfinite(step_tolerance_m) && step_tolerance_m >= 0.0,
                      "step_tolerance_m must be finite and >= 0, got " << step_tolerance_m);

@@ -25,6 +25,10 @@ struct MarkerOffsetRegisterResult {
   /// (by more than kRrbcOrientationToleranceRad) from the orientation most fiducials share. RRBC
   /// interpolates an error field measured at one orientation; the tilted poses would mix others in.
   std::vector<std::string> offset_only;
+  /// p's standard uncertainty from the robot's joint zero offsets (estimation's
+  /// joint_offset_sigma_rad; 0 when not given) [m], and with the noise's (the model stores it).
+  Eigen::Vector3d p_std_joint_offsets_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_std_total_m = Eigen::Vector3d::Zero();
   [[nodiscard]] bool ok() const { return estimate.ok() && registered.has_value(); }
 };
 

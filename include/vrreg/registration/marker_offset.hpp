@@ -21,6 +21,10 @@ struct MarkerOffsetOptions {
   double min_orientation_spread = 0.02;
   int max_iterations = 100;         ///< Levenberg-Marquardt iterations
   double step_tolerance_m = 1e-15;  ///< stop when the parameter step is below this [m, rad x m]
+  /// Standard uncertainty of the robot's joint zero offsets [rad], for register_with_marker_offset
+  /// (pipeline): propagated into p's uncertainty (systematic flange errors look like another
+  /// offset). 0: the stated uncertainty covers noise only.
+  double joint_offset_sigma_rad = 0.0;
   void validate() const;
 };
 
