@@ -1,7 +1,8 @@
 // Hand-eye planning (issue 11): the tilted poses keep every location's TCP position and arm
 // configuration and make the marker offset observable; the robot programs written from the plan
 // parse (a small URScript and KRL reader) and their joints reproduce the plan's poses by FK.
-#include <regex>
+#include <cctype>
+#include <optional>
 #include <sstream>
 
 #include "vrreg/core/check.hpp"
@@ -79,48 +80,98 @@ std::vector<ProgramLocation> program_locations(const PlanResult& plan) {
   return out;
 }
 
-std::vector<double> numbers(const std::string& list) {
-  std::vector<double> out;
-  std::stringstream in(list);
+// A whole string as one number (std::regex is avoided: GCC 12 warns inside it under sanitizers).
+bool number(const std::string& text, double& value) {
+  if (text.empty() || text.find_first_of(" ,") != std::string::npos) return false;
+  std::size_t used = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return used == text.size();
+}
+
+bool starts_with(const std::string& text, const std::string& prefix) {
+  return text.rfind(prefix, 0) == 0;
+}
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// "PREFIX<number>SUFFIX" with nothing else.
+bool call_of_number(const std::string& line, const std::string& prefix, const std::string& suffix) {
+  double v = 0.0;
+  return starts_with(line, prefix) && ends_with(line, suffix) &&
+         number(line.substr(prefix.size(), line.size() - prefix.size() - suffix.size()), v);
+}
+
+// `PREFIX"TEXT"SUFFIX` with no quote or backslash in TEXT.
+bool call_of_string(const std::string& line, const std::string& prefix, const std::string& suffix) {
+  if (!starts_with(line, prefix + "\"") || !ends_with(line, "\"" + suffix)) return false;
+  const std::string inner =
+      line.substr(prefix.size() + 1, line.size() - prefix.size() - suffix.size() - 2);
+  return inner.find_first_of("\"\\") == std::string::npos;
+}
+
+// "  movej([q1, ..., q6], a=A, v=V)": the joints, or none when the line is not such a call.
+std::optional<Eigen::VectorXd> movej_joints(const std::string& line) {
+  const std::string prefix = "  movej([";
+  const std::size_t close = line.find(']');
+  if (!starts_with(line, prefix) || close == std::string::npos) return std::nullopt;
+  std::vector<double> q;
+  std::stringstream list(line.substr(prefix.size(), close - prefix.size()));
   std::string item;
-  while (std::getline(in, item, ',')) out.push_back(std::stod(item));
-  return out;
+  while (std::getline(list, item, ',')) {
+    if (!item.empty() && item.front() == ' ') item.erase(0, 1);
+    double v = 0.0;
+    if (!number(item, v)) return std::nullopt;
+    q.push_back(v);
+  }
+  const std::string rest = line.substr(close + 1);  // ", a=A, v=V)"
+  const std::size_t v_at = rest.find(", v=");
+  double a = 0.0, v = 0.0;
+  if (!starts_with(rest, ", a=") || v_at == std::string::npos || !ends_with(rest, ")") ||
+      !number(rest.substr(4, v_at - 4), a) ||
+      !number(rest.substr(v_at + 4, rest.size() - v_at - 5), v)) {
+    return std::nullopt;
+  }
+  return Eigen::Map<const Eigen::VectorXd>(q.data(), static_cast<Eigen::Index>(q.size()));
 }
 
 // A small URScript reader: one program `def NAME():` ... `end`, then `NAME()`; inside, only
 // comments, textmsg, movej with 6 joints and a, v, sleep and blocking popups, with balanced
-// parentheses and quotes. Returns the movej joints in order.
+// quotes. Returns the movej joints in order.
 std::vector<Eigen::VectorXd> parse_urscript(const std::string& text, int& popups) {
-  const std::regex def(R"(^def ([A-Za-z_][A-Za-z0-9_]*)\(\):$)");
-  const std::regex movej(R"(^  movej\(\[([-0-9.eE+, ]+)\], a=[0-9.eE+-]+, v=[0-9.eE+-]+\)$)");
-  const std::regex sleep(R"(^  sleep\([0-9.eE+-]+\)$)");
-  const std::regex textmsg(R"(^  textmsg\("[^"\\]*"\)$)");
-  const std::regex popup(R"(^  popup\("[^"\\]*", "vrreg", False, False, blocking=True\)$)");
   std::istringstream in(text);
   std::string line, name;
   std::vector<Eigen::VectorXd> joints;
   enum { kBefore, kInside, kAfter, kCalled } state = kBefore;
   popups = 0;
-  std::smatch m;
   while (std::getline(in, line)) {
     if (line.empty() || line.find_first_not_of(' ') == std::string::npos) continue;
     if (line[line.find_first_not_of(' ')] == '#') continue;
     if (state == kBefore) {
-      EXPECT_TRUE(std::regex_match(line, m, def)) << line;
-      name = m[1];
+      EXPECT_TRUE(starts_with(line, "def ") && ends_with(line, "():")) << line;
+      name = line.substr(4, line.size() - 7);
+      EXPECT_FALSE(name.empty());
+      for (const char c : name)
+        EXPECT_TRUE(std::isalnum(static_cast<unsigned char>(c)) || c == '_');
       state = kInside;
     } else if (state == kInside) {
       if (line == "end") {
         state = kAfter;
-      } else if (std::regex_match(line, m, movej)) {
-        const std::vector<double> q = numbers(m[1]);
-        EXPECT_EQ(q.size(), 6u) << line;
-        joints.push_back(
-            Eigen::Map<const Eigen::VectorXd>(q.data(), static_cast<Eigen::Index>(q.size())));
-      } else if (std::regex_match(line, popup)) {
+      } else if (const std::optional<Eigen::VectorXd> q = movej_joints(line)) {
+        EXPECT_EQ(q->size(), 6) << line;
+        joints.push_back(*q);
+      } else if (call_of_string(line, "  popup(", ", \"vrreg\", False, False, blocking=True)")) {
         ++popups;
       } else {
-        EXPECT_TRUE(std::regex_match(line, sleep) || std::regex_match(line, textmsg)) << line;
+        EXPECT_TRUE(call_of_number(line, "  sleep(", ")") ||
+                    call_of_string(line, "  textmsg(", ")"))
+            << line;
       }
     } else if (state == kAfter) {
       EXPECT_EQ(line, name + "()");
@@ -131,6 +182,27 @@ std::vector<Eigen::VectorXd> parse_urscript(const std::string& text, int& popups
   }
   EXPECT_EQ(state, kCalled);
   return joints;
+}
+
+// "  PTP {A1 x, A2 y, ...}" with the axes `axes` in order: the joints [rad], or none.
+std::optional<Eigen::VectorXd> ptp_joints(const std::string& line,
+                                          const std::vector<std::string>& axes) {
+  if (!starts_with(line, "  PTP {") || !ends_with(line, "}")) return std::nullopt;
+  std::stringstream list(line.substr(7, line.size() - 8));
+  std::string item;
+  Eigen::VectorXd q(static_cast<Eigen::Index>(axes.size()));
+  std::size_t k = 0;
+  while (std::getline(list, item, ',')) {
+    if (!item.empty() && item.front() == ' ') item.erase(0, 1);
+    double v = 0.0;
+    if (k >= axes.size() || !starts_with(item, axes[k] + " ") ||
+        !number(item.substr(axes[k].size() + 1), v)) {
+      return std::nullopt;
+    }
+    q(static_cast<Eigen::Index>(k++)) = v * M_PI / 180.0;
+  }
+  if (k != axes.size()) return std::nullopt;
+  return q;
 }
 
 TEST(RobotProgram, UrScriptParsesAndReproducesThePlanByFk) {
@@ -160,22 +232,19 @@ TEST(RobotProgram, KrlParsesAndReproducesThePlanByFk) {
   OffsetPoseSummary summary;
   const PlanResult plan = small_plan(chain, 20.0, &summary);
   const std::string text = robot_program(program_locations(plan), ProgramFormat::kKrl);
-  const std::regex ptp(
-      R"(^  PTP \{A1 ([-0-9.]+), A2 ([-0-9.]+), A3 ([-0-9.]+), A4 ([-0-9.]+), A5 ([-0-9.]+), A6 ([-0-9.]+)\}$)");
   std::istringstream in(text);
   std::string line;
   std::size_t k = 0, halts = 0;
-  std::smatch m;
   bool def = false, end = false;
   while (std::getline(in, line)) {
     def = def || line == "DEF vrreg_plan( )";
     end = end || line == "END";
     halts += line == "  HALT" ? 1 : 0;
-    if (!std::regex_match(line, m, ptp)) continue;
+    if (!starts_with(line, "  PTP")) continue;
+    const std::optional<Eigen::VectorXd> q = ptp_joints(line, {"A1", "A2", "A3", "A4", "A5", "A6"});
+    ASSERT_TRUE(q.has_value()) << line;
     ASSERT_LT(k, plan.locations.size());
-    Eigen::VectorXd q(6);
-    for (int j = 0; j < 6; ++j) q(j) = std::stod(m[j + 1]) * M_PI / 180.0;
-    EXPECT_EIGEN_NEAR(kinematics::forward_kinematics(chain, q).translation(),
+    EXPECT_EIGEN_NEAR(kinematics::forward_kinematics(chain, *q).translation(),
                       plan.locations[k].robot_m, 1e-9);
     ++k;
   }
