@@ -2,3 +2,15 @@
 find_package(orocos_kdl REQUIRED)
 target_include_directories(vrreg_benchmarks SYSTEM PRIVATE ${orocos_kdl_INCLUDE_DIRS})
 target_link_libraries(vrreg_benchmarks PRIVATE ${orocos_kdl_LIBRARIES})
+# OpenCV's calibrateRobotWorldHandEye (Debian libopencv-calib3d-dev, no CMake config there) as the
+# peer of the marker-offset estimate (hand_eye_bench.cpp); optional: without it vrreg's side runs.
+find_path(VRREG_OPENCV_INCLUDE_DIR opencv2/calib3d.hpp PATH_SUFFIXES opencv4)
+find_library(VRREG_OPENCV_CALIB3D_LIB opencv_calib3d)
+find_library(VRREG_OPENCV_CORE_LIB opencv_core)
+if(VRREG_OPENCV_INCLUDE_DIR AND VRREG_OPENCV_CALIB3D_LIB AND VRREG_OPENCV_CORE_LIB)
+  target_include_directories(vrreg_benchmarks SYSTEM PRIVATE ${VRREG_OPENCV_INCLUDE_DIR})
+  target_link_libraries(vrreg_benchmarks PRIVATE ${VRREG_OPENCV_CALIB3D_LIB} ${VRREG_OPENCV_CORE_LIB})
+  target_compile_definitions(vrreg_benchmarks PRIVATE VRREG_HAVE_OPENCV)
+else()
+  message(STATUS "OpenCV calib3d not found: the hand-eye benchmark runs without its OpenCV peer")
+endif()

@@ -20,6 +20,10 @@ packages=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev libtbb-dev libnanoflann-dev libqhull-dev
   libyaml-cpp-dev libfmt-dev liborocos-kdl-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
+  liburdfdom-dev  # test-only: vrreg export's URDF read back (tests/robot_io)
+  # benchmark-only peer (optional in CMake): OpenCV's calibrateRobotWorldHandEye beside the
+  # marker-offset estimate (benchmarks/hand_eye_bench.cpp, docs/benchmarks.md)
+  libopencv-calib3d-dev
   file dpkg-dev  # cpack -G DEB: dpkg-shlibdeps computes the .deb's Depends (scripts/package.sh)
   # The Python module (python/, docs/python.md) for Debian's /usr/bin/python3, its tests and
   # python/benchmarks/bench.py (scipy peers).

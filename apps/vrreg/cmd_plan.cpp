@@ -18,6 +18,8 @@
 #include "vrreg/io/plan_csv.hpp"
 #include "vrreg/kinematics/pose.hpp"
 #include "vrreg/kinematics/robots.hpp"
+#include "vrreg/planning/offset_poses.hpp"
+#include "plan_program_cli.hpp"
 #include "vrreg/simulation/testbed.hpp"
 
 namespace vrreg::cli {
@@ -117,12 +119,23 @@ void run_plan_unchecked(const PlanArgs& args) {
   } catch (const InputError& e) {
     throw InputError(std::string(e.what()) + " (--force plans anyway)");
   }
-  const planning::PlanResult plan = planning::make_plan(setup.chain, setup.parts, setup.options);
+  planning::PlanResult plan = planning::make_plan(setup.chain, setup.parts, setup.options);
   if (!plan.ok()) {
     throw InputError(args.parts + ": " + plan.message +
                      ". Check that the part points are in the robot base frame, or change "
                      "--rpy-deg, --home-deg or --psi-deg (see vrreg ik)");
   }
+  if (args.offset_tilt_deg) {  // hand-eye: tilts about two axes make the marker offset observable
+    const planning::OffsetPoseSummary poses = planning::add_offset_poses(
+        setup.chain, plan, setup.options.arm, units::deg_to_rad(*args.offset_tilt_deg));
+    setup.notes.push_back(
+        "offset poses: " + std::to_string(poses.n_added) + " fiducials 'offset-*' first, the "
+        "tool tilted by +-" + format_fixed(*args.offset_tilt_deg, 1) +
+        " deg about its x and y axes at the volume's corners and centre (" +
+        std::to_string(poses.n_unreachable) +
+        " unreachable, left out); register with --estimate-marker-offset");
+  }
+  if (!args.export_format.empty()) write_plan_program(args, setup, plan);
   if (!args.output.empty()) {
     io::write_plan_csv(args.output, plan_rows(plan), plan_comments(args, setup, plan));
   }
@@ -137,7 +150,7 @@ void run_plan(const PlanArgs& args) {
   // --robot names a built-in robot or a robot file; only a file is an input.
   const std::string robot_file = kinematics::robot_by_name(args.robot) ? "" : args.robot;
   io::check_outputs_are_not_inputs({{"--parts", args.parts}, {"--robot", robot_file}},
-                                   {{"-o", args.output}});
+                                   {{"-o", args.output}, {"--program", args.program}});
   try {
     run_plan_unchecked(args);
   } catch (const io::FileError&) {
@@ -188,6 +201,13 @@ void add_plan_command(CLI::App& app) {
       ->expected(1, kinematics::kMaxJoints);
   cmd->add_option("--norm", args->norm, "joint-space distance for 'nearest': l2 (paper) or linf")
       ->check(CLI::IsMember({"l2", "linf"}));
+  cmd->add_option("--offset-tilt-deg", args->offset_tilt_deg,
+                  "add poses with the tool tilted by this angle about its x and y axes (+-) at the "
+                  "corners and centre of the volume, so that the marker's offset on the flange is "
+                  "observable: register with --estimate-marker-offset (docs/hand-eye.md); 15-25 "
+                  "is typical")
+      ->check(CLI::Range(0.1, 60.0));
+  add_program_options(*cmd, *args);
   add_output_option(*cmd, "-o,--output", args->output, "write the plan CSV here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the summary");
   cmd->callback([args] { run_plan(*args); });

@@ -6,6 +6,7 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "marker_offset_cli.hpp"
 #include "strategy_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
@@ -27,6 +28,7 @@ struct RegisterArgs {
   std::string output;
   bool json = false;
   bool exact_sigma_l = false;
+  MarkerOffsetFlags marker_offset;
 };
 
 void run_register_unchecked(const RegisterArgs& args);
@@ -95,6 +97,12 @@ void print_robust(const RobustReport& report) {
 void run_register_unchecked(const RegisterArgs& args) {
   const RegisterOptions options = register_options(args);
   options.validate();  // flag combinations before reading the file
+  args.marker_offset.check();
+  if (args.marker_offset.enabled()) {  // hand-eye registration: its own report (marker_offset_cli)
+    run_register_with_marker_offset(args.fiducials, args.marker_offset, options, args.output,
+                                    args.json);
+    return;
+  }
   const RegisterResult result =
       register_fiducials(io::read_measurement_csv(args.fiducials), options);
   const RegistrationModel& model = result.model;
@@ -209,6 +217,7 @@ void add_register_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   args->interpolation.add_to(*cmd);
   args->strategy.add_to(*cmd, true);
+  args->marker_offset.add_to(*cmd);
   add_output_option(*cmd, "-o,--output", args->output, "write the model (JSON) here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->add_flag("--exact-sigma-l", args->exact_sigma_l,

@@ -1,6 +1,7 @@
 // vrreg simulate: the paper's datasets acquired on a simulated test bed (UR5: A1, A2, B; KUKA
 // LWR 4+: grid), or a plan of `vrreg plan` measured on it (--plan), written as a measurement CSV.
 // Same seed, same bytes.
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -25,6 +26,8 @@ struct SimulateArgs {
   std::string output;
   std::string write_errors;
   std::string plan;
+  std::vector<double> marker_flange_mm;
+  bool unknown_marker = false;
 };
 
 // The plan's rows as the robot program is told them; errors name the plan file.
@@ -62,6 +65,15 @@ void run_simulate(const SimulateArgs& args) {
   const simulation::Testbed testbed = simulation::testbed_by_name(args.testbed);
   simulation::SimulationOptions options;
   options.seed = args.seed;
+  if (!args.marker_flange_mm.empty()) {
+    for (const double v : args.marker_flange_mm) {
+      VRREG_THROW_UNLESS(std::isfinite(v), "--marker-flange-mm: values must be finite");
+    }
+    options.marker_flange_m = 1e-3 * Eigen::Vector3d(
+        args.marker_flange_mm[0], args.marker_flange_mm[1], args.marker_flange_mm[2]);
+  } else if (args.unknown_marker) {
+    options.marker_flange_m = simulation::kRealisticMarkerFlangeM;
+  }
   if (!args.errors.empty()) options.errors = io::read_error_model_file(args.errors, testbed);
   if (!args.write_errors.empty()) {
     io::write_error_model_file(args.write_errors, options.errors.value_or(testbed.default_errors),
@@ -98,6 +110,10 @@ void run_simulate(const SimulateArgs& args) {
   std::printf("  %zu locations (%zu fiducials, %zu targets), %zu visits, %zu readings\n",
               data.locations.size(), data.locations.size() - targets, targets, data.visits.size(),
               data.readings.size());
+  if (data.marker_flange_m) {
+    std::printf("  true marker in the flange frame %s mm (robot_*_mm: the controller's TCP)\n",
+                format_mm3(*data.marker_flange_m, 3).c_str());
+  }
   std::printf("  written to %s\n", args.output.c_str());
 }
 
@@ -119,6 +135,15 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--errors", args->errors,
                   "error-model file (JSON or YAML) over the test bed's defaults; see "
                   "--write-errors");
+  CLI::Option* marker =
+      cmd->add_option("--marker-flange-mm", args->marker_flange_mm,
+                      "X Y Z: where the tracked marker really sits in the flange frame, mm (a cell "
+                      "whose offset is unknown: robot_*_mm stay the controller's TCP); default the "
+                      "test bed's tool, as in the paper")
+          ->expected(3);
+  cmd->add_flag("--unknown-marker", args->unknown_marker,
+                "the marker at a realistic unknown offset, (35, -25, 85) mm in the flange frame")
+      ->excludes(marker);
   add_output_option(*cmd, "-o,--output", args->output, "measurement CSV to write");
   add_output_option(*cmd, "--write-errors", args->write_errors,
                     "write the error model in use (defaults, or --errors) to this JSON file");

@@ -24,6 +24,10 @@ struct PlanArgs {
   std::optional<double> psi_deg;
   std::vector<double> home_deg;
   std::string norm = "l2";
+  std::optional<double> offset_tilt_deg;  ///< tilt the locations so the marker offset is observable
+  std::string export_format;              ///< robot program: urscript, krl or csv
+  std::string program;                    ///< where to write it
+  int repeats = 0;                        ///< tracker readings per location the program waits for
   std::string output;
   bool json = false;
 };

@@ -11,6 +11,7 @@
 #include "vrreg/pipeline/correct.hpp"
 #include "vrreg/pipeline/evaluate.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
+#include "vrreg/pipeline/marker_offset.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/pipeline/points.hpp"
 #include "vrreg/pipeline/register_fiducials.hpp"

@@ -17,4 +17,5 @@ PYBIND11_MODULE(_vrreg, m) {
   bind_simulation(m);
   bind_experiments(m);
   bind_timing(m);
+  bind_hand_eye(m);
 }

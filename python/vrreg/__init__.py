@@ -20,6 +20,7 @@ from ._vrreg import (
     Simulation,
     StencilStatus,
     correct,
+    estimate_marker_offset,
     evaluate,
     fk,
     ik,
@@ -48,7 +49,7 @@ def reproduce(seed: int = 1, *, ur5: bool = True, lwr4: bool = True) -> dict:
 __all__ = [
     "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
     "Plan", "RegisterResult", "RHO_THRESHOLD", "Simulation", "StencilStatus", "correct",
-    "evaluate", "fk", "ik", "improvement", "load_model", "model_from_json", "plan",
+    "estimate_marker_offset", "evaluate", "fk", "ik", "improvement", "load_model", "model_from_json", "plan",
     "read_measurements", "register", "reproduce", "rho", "rigid_body_statistics", "robots",
     "sigma_noise", "simulate",
 ]

@@ -252,6 +252,9 @@ def rigid_body_statistics(sensor: ArrayLike, robot: ArrayLike) -> dict[str, floa
 def sigma_noise(sigma_opt: float, sigma_rep: float) -> float: ...
 def rho(sigma_l: float, sigma_noise: float) -> float: ...
 def improvement(unc_tre: ArrayLike, cor_tre: ArrayLike) -> dict[str, Any]: ...
+def estimate_marker_offset(robot: str, joints: ArrayLike, sensor: ArrayLike, *,
+                           min_orientation_spread: float = 0.02) -> dict[str, Any]:
+    """T_robot_sensor and the marker offset in the flange frame (m), with uncertainties."""
 def fk(robot: str, q: ArrayLike, *, tool: Optional[ArrayLike] = None) -> Array:
     """T_base_tcp (4, 4), translation in metres."""
 def ik(robot: str, pose: ArrayLike, *, psi: Optional[float] = None,

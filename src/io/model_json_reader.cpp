@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "json_fields.hpp"
+#include "model_marker_offset_json.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/input_file.hpp"
@@ -203,6 +204,9 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
     model.corrections_sensor_m.col(static_cast<Eigen::Index>(j)) = correction_m;
   }
   model.procedure2 = read_procedure2(doc, f, model.fiducials.size());
+  if (doc.contains("marker_offset")) {
+    model.marker_offset = detail::read_marker_offset(doc.at("marker_offset"), "marker_offset", f);
+  }
   return model;
 }
 

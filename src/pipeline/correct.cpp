@@ -3,15 +3,20 @@
 #include "procedure2_steps.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/pipeline/marker_offset.hpp"
 
 namespace vrreg {
 namespace {
 
 using planning::Strategy;
 
-CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& input,
+CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& file_set,
                           const CorrectOptions& options) {
   model.validate();
+  // Hand-eye model: points with joints get their robot positions from the estimated offset.
+  MeasurementSet moved;
+  if (model.marker_offset) moved = with_marker_offset(model, file_set, Role::kTarget, false);
+  const MeasurementSet& input = model.marker_offset ? moved : file_set;
   const Strategy strategy = model.procedure2.strategy;  // Procedure 2 (section 4.4): as registered
   const kinematics::JointNorm norm = model.procedure2.joint_norm;
   const MeasurementSet* set = &input;
@@ -54,7 +59,7 @@ CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& poin
                       const CorrectOptions& options) {
   const bool per_point = model.procedure2.strategy != Strategy::kAlongPath &&
                          model.procedure2.strategy != Strategy::kVolumeCorners &&
-                         !options.config && !model.config;
+                         !options.config && !model.config && !model.marker_offset;
   if (!per_point) {  // labels and joints decide which points and which fiducials: the set's way
     CorrectResult out = correct_set(model, points.to_measurement_set(Role::kTarget, false), options);
     if (points.names.empty()) out.names.clear();

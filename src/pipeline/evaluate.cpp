@@ -4,6 +4,7 @@
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/metrics/errors.hpp"
+#include "vrreg/pipeline/marker_offset.hpp"
 
 namespace vrreg {
 namespace {
@@ -32,9 +33,13 @@ Strategy strategy_to_use(const RegistrationModel& model, const EvaluateOptions& 
   return s;
 }
 
-EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet& input,
+EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet& file_set,
                             const EvaluateOptions& options) {
   model.validate();
+  // Hand-eye model: the targets' robot positions come from their joints and the estimated offset.
+  MeasurementSet moved;
+  if (model.marker_offset) moved = with_marker_offset(model, file_set, Role::kTarget, true);
+  const MeasurementSet& input = model.marker_offset ? moved : file_set;
   EvaluateResult out;
   out.strategy = strategy_to_use(model, options);
   const kinematics::JointNorm norm = options.joint_norm.value_or(model.procedure2.joint_norm);

@@ -126,6 +126,13 @@ std::vector<std::string> simulated_dataset_comments(const simulation::SimulatedD
                 g(m_to_mm(data.T_robot_sensor.translation_m.z()), 8) + "] mm, rpy [" +
                 g(rad_to_deg(rpy.x()), 8) + ", " + g(rad_to_deg(rpy.y()), 8) + ", " +
                 g(rad_to_deg(rpy.z()), 8) + "] deg");
+  if (data.marker_flange_m) {
+    out.push_back("true marker position in the flange frame p_flange_marker: [" +
+                  g(m_to_mm(data.marker_flange_m->x()), 8) + ", " +
+                  g(m_to_mm(data.marker_flange_m->y()), 8) + ", " +
+                  g(m_to_mm(data.marker_flange_m->z()), 8) +
+                  "] mm; robot_*_mm hold the controller's TCP, not the marker");
+  }
   out.push_back("robot repeatability spec (for sigma_noise, Eq. 9): " +
                 g(m_to_mm(data.sigma_rep_spec_m)) + " mm");
   return out;

@@ -77,6 +77,7 @@ SimulatedDataset simulate_dataset(const Testbed& testbed, Dataset dataset,
   data.errors.validate(testbed.nominal.n_joints());
   data.sigma_rep_spec_m = testbed.sigma_rep_spec_m;
   data.has_config = testbed.kind == TestbedKind::kLwr4;
+  data.marker_flange_m = options.marker_flange_m;
 
   data.locations = plan_dataset(testbed, dataset);
   if (testbed.kind == TestbedKind::kUr5) {
@@ -93,7 +94,14 @@ namespace detail {
 void acquire_visits(const Testbed& testbed, SimulatedDataset& data) {
   Random robot_rng = Random::stream(data.seed, kRobotStream);
   data.robot = draw_robot_errors(data.errors.robot, testbed.nominal.n_joints(), robot_rng);
-  const SimulatedRobot robot(testbed.nominal, data.errors.robot, data.robot);
+  // The real marker: the controller's tool unless the cell's offset differs (hand-eye scenario).
+  Eigen::Isometry3d T_flange_marker = testbed.nominal.T_flange_tcp();
+  if (data.marker_flange_m) {
+    VRREG_THROW_UNLESS(data.marker_flange_m->allFinite(), "the marker offset must be finite");
+    T_flange_marker.translation() = *data.marker_flange_m;
+  }
+  const SimulatedRobot robot(testbed.nominal.with_tool(T_flange_marker), data.errors.robot,
+                             data.robot);
   data.T_robot_sensor = tracker_pose(data.errors.tracker, testbed.volume_centre_m);
   const RigidTransform T_sensor_robot = data.T_robot_sensor.inverse();
 

@@ -42,6 +42,7 @@ SimulatedDataset simulate_plan(const Testbed& testbed, const std::vector<Command
   data.errors.validate(testbed.nominal.n_joints());
   data.sigma_rep_spec_m = testbed.sigma_rep_spec_m;
   data.has_config = plan.front().config.has_value();
+  data.marker_flange_m = options.marker_flange_m;
   std::set<std::pair<std::string, int>> seen;
   for (std::size_t n = 0; n < plan.size(); ++n) {
     const CommandedLocation& c = plan[n];

@@ -11,6 +11,7 @@
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/correction/interpolation.hpp"
 #include "vrreg/metrics/rigid_body_sampled.hpp"
+#include "vrreg/pipeline/marker_offset_model.hpp"
 #include "vrreg/planning/procedure2.hpp"
 
 namespace vrreg {
@@ -31,6 +32,9 @@ struct RegistrationModel {
   SigmaLSampling sigma_l_sampling;   ///< sampled: sigma_l_m is estimated from a sample of pairs
   std::optional<double> sigma_rep_m;  ///< robot repeatability given when building (Eq. 9) [m]
   std::string source;                ///< the fiducial file (or "arrays") it came from
+  /// Hand-eye registration (register_with_marker_offset): the estimated marker offset; the
+  /// fiducials' robot positions and every target's come from forward kinematics with it.
+  std::optional<MarkerOffsetModel> marker_offset;
 
   /// What RRBC interpolates (Eq. 6-8): the transform, fiducial positions, corrections, order.
   [[nodiscard]] CorrectionField correction_field() const;

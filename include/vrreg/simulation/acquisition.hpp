@@ -20,7 +20,15 @@ namespace vrreg::simulation {
 struct SimulationOptions {
   std::uint64_t seed = 1;                   ///< decides the robot (DH errors, phases) and noise
   std::optional<TestbedErrorModel> errors;  ///< empty: the test bed's defaults
+  /// Where the tracked marker really sits in the flange frame [m]; empty: where the controller's
+  /// tool says (the paper's precision mount). Set it to simulate a cell whose offset is unknown:
+  /// the file's robot positions stay the controller's TCP, the tracker sees the real marker.
+  std::optional<Eigen::Vector3d> marker_flange_m = std::nullopt;
 };
+
+/// A realistic unknown marker offset for the hand-eye scenario: a marker clamped to the gripper
+/// tens of millimetres off the tool axis (35, -25, 85) mm in the flange frame.
+inline const Eigen::Vector3d kRealisticMarkerFlangeM{0.035, -0.025, 0.085};
 
 /// One visit of the arm: a location in one arm configuration.
 struct SimulatedVisit {
@@ -45,6 +53,8 @@ struct SimulatedDataset {
   TestbedErrorModel errors;       ///< the error model used
   RobotErrors robot;              ///< the robot the seed drew
   RigidTransform T_robot_sensor;  ///< the true tracker pose
+  /// The true marker position in the flange frame [m] when options gave one; empty: the tool's.
+  std::optional<Eigen::Vector3d> marker_flange_m;
   double sigma_rep_spec_m = 0.0;  ///< the robot's specified repeatability
   bool has_config = false;  ///< visits carry configuration labels (LWR grid; plans with config)
   std::vector<PlannedLocation> locations;

@@ -1,0 +1,45 @@
+#include "plan_program_cli.hpp"
+
+#include <cstdio>
+
+#include "cli_support.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/io/atomic_write.hpp"
+#include "vrreg/planning/robot_program.hpp"
+
+namespace vrreg::cli {
+
+void add_program_options(CLI::App& command, PlanArgs& args) {
+  CLI::Option* format =
+      command
+          .add_option("--export", args.export_format,
+                      "also write the plan as a robot program: urscript (UR movej list), krl "
+                      "(KUKA PTP list) or csv (joints); a pause for the tracker readings at each "
+                      "location (docs/hand-eye.md)")
+          ->check(CLI::IsMember({"urscript", "krl", "csv"}));
+  add_output_option(command, "--program", args.program, "with --export: the program file")
+      ->needs(format);
+  format->needs("--program");
+  command
+      .add_option("--repeats", args.repeats,
+                  "with --export: tracker readings per location the program asks for "
+                  "(default: 12, the paper's K)")
+      ->needs(format)
+      ->check(CLI::Range(1, 1000));
+}
+
+void write_plan_program(const PlanArgs& args, const PlanSetup& setup,
+                        const planning::PlanResult& plan) {
+  std::vector<planning::ProgramLocation> locations;
+  for (const planning::PlannedLocation& l : plan.locations) {
+    locations.push_back({l.point, l.role, l.config.to_string(), l.q_rad});
+  }
+  planning::ProgramOptions options;
+  if (args.repeats > 0) options.repeats = args.repeats;
+  (void)setup;
+  io::write_file_atomically(
+      args.program, planning::robot_program(
+                        locations, planning::parse_program_format(args.export_format), options));
+}
+
+}  // namespace vrreg::cli

@@ -1,0 +1,16 @@
+#pragma once
+// `vrreg plan --export urscript|krl|csv --program FILE`: the plan as a robot program.
+#include <CLI/CLI.hpp>
+
+#include "plan_output.hpp"
+
+namespace vrreg::cli {
+
+/// Adds --export, --program and --repeats.
+void add_program_options(CLI::App& command, PlanArgs& args);
+
+/// Writes the program of `plan` (visiting order) to args.program.
+void write_plan_program(const PlanArgs& args, const PlanSetup& setup,
+                        const planning::PlanResult& plan);
+
+}  // namespace vrreg::cli
