@@ -29,7 +29,7 @@ struct Truth {
   Eigen::Isometry3d T_flange_marker = Eigen::Isometry3d::Identity();
 };
 
-struct Data {
+struct HandEyeData {
   std::vector<Eigen::Isometry3d> T_robot_flange;
   std::vector<Eigen::Isometry3d> T_sensor_marker;  // what the tracker reads (noisy)
   vrreg::Points3 markers_sensor_m;
@@ -46,10 +46,10 @@ Truth make_truth() {
 }
 
 // n flange poses in a 0.3 m box, tool down, tilted up to 20 deg about two axes.
-Data make_data(const Truth& truth, int n, std::uint64_t seed) {
+HandEyeData make_data(const Truth& truth, int n, std::uint64_t seed) {
   vrreg::Random layout(99);
   vrreg::Random noise(seed);
-  Data d;
+  HandEyeData d;
   d.markers_sensor_m.resize(3, n);
   const Eigen::Isometry3d T_sensor_robot = truth.T_robot_sensor.inverse();
   const double tilt = 20.0 * M_PI / 180.0;
@@ -77,7 +77,7 @@ struct Estimate {
   Eigen::Vector3d p_flange_marker_m = Eigen::Vector3d::Zero();
 };
 
-Estimate vrreg_estimate(const Data& d) {
+Estimate vrreg_estimate(const HandEyeData& d) {
   const vrreg::MarkerOffsetResult r =
       vrreg::estimate_marker_offset(d.T_robot_flange, d.markers_sensor_m);
   Estimate e;
@@ -88,7 +88,7 @@ Estimate vrreg_estimate(const Data& d) {
 
 #ifdef VRREG_HAVE_OPENCV
 // OpenCV: cTw wTb = cTg gTb with c = marker, w = sensor, g = flange, b = robot base.
-Estimate opencv_estimate(const Data& d, cv::RobotWorldHandEyeCalibrationMethod method) {
+Estimate opencv_estimate(const HandEyeData& d, cv::RobotWorldHandEyeCalibrationMethod method) {
   std::vector<cv::Mat> R_world2cam, t_world2cam, R_base2gripper, t_base2gripper;
   for (std::size_t j = 0; j < d.T_robot_flange.size(); ++j) {
     const Eigen::Isometry3d A = d.T_sensor_marker[j].inverse();  // marker <- sensor
@@ -143,7 +143,7 @@ void accuracy_counters(benchmark::State& state, int n, Solve solve) {
 
 void BM_vrreg_marker_offset(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
-  const Data d = make_data(make_truth(), n, 1);
+  const HandEyeData d = make_data(make_truth(), n, 1);
   for (auto _ : state) {
     auto r = vrreg_estimate(d);
     benchmark::DoNotOptimize(r);
@@ -155,8 +155,8 @@ BENCHMARK(BM_vrreg_marker_offset)->Arg(20)->Arg(60)->Arg(200)->Unit(benchmark::k
 #ifdef VRREG_HAVE_OPENCV
 void run_opencv(benchmark::State& state, cv::RobotWorldHandEyeCalibrationMethod method) {
   const int n = static_cast<int>(state.range(0));
-  const auto solve = [method](const Data& d) { return opencv_estimate(d, method); };
-  const Data d = make_data(make_truth(), n, 1);
+  const auto solve = [method](const HandEyeData& d) { return opencv_estimate(d, method); };
+  const HandEyeData d = make_data(make_truth(), n, 1);
   for (auto _ : state) {
     auto r = solve(d);
     benchmark::DoNotOptimize(r);

@@ -27,5 +27,6 @@ struct CommandRegistrar {
 #define VRREG_CONCAT_INNER(a, b) a##b
 #define VRREG_CONCAT(a, b) VRREG_CONCAT_INNER(a, b)
 /// Registers a command set-up function: VRREG_REGISTER_COMMAND(10, add_register_command);
+/// __COUNTER__, not __LINE__: a unity build puts several cmd_*.cpp in one translation unit.
 #define VRREG_REGISTER_COMMAND(order, fn) \
-  static const ::vrreg::cli::CommandRegistrar VRREG_CONCAT(vrreg_registrar_, __LINE__)(order, fn)
+  static const ::vrreg::cli::CommandRegistrar VRREG_CONCAT(vrreg_registrar_, __COUNTER__)(order, fn)

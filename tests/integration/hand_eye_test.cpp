@@ -6,6 +6,7 @@
 
 #include <cstdio>
 
+#include "noise_free.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/planning/offset_poses.hpp"
@@ -61,12 +62,7 @@ MeasurementSet simulate(const HandEyeCell& cell, simulation::SimulationOptions o
       simulation::simulate_plan(cell.testbed, commanded, options));
 }
 
-simulation::TestbedErrorModel perfect(const simulation::Testbed& testbed) {
-  simulation::TestbedErrorModel e;
-  e.tracker = testbed.default_errors.tracker;
-  e.tracker.noise_sigma_m.setZero();
-  return e;
-}
+using testing::noise_free_tracker_only;
 
 // The set with every robot position from forward kinematics and a given marker offset.
 MeasurementSet with_known_offset(const MeasurementSet& set, const kinematics::SerialChain& robot,
@@ -81,7 +77,7 @@ TEST(HandEye, NoiseFreeCellGivesOffsetAndTransformBack) {
   const HandEyeCell cell = hand_eye_plan(20.0);
   simulation::SimulationOptions options;
   options.seed = 3;
-  options.errors = perfect(cell.testbed);
+  options.errors = noise_free_tracker_only(cell.testbed);
   options.marker_flange_m = simulation::kRealisticMarkerFlangeM;
   const MeasurementSet set = simulate(cell, options);
   const MarkerOffsetRegisterResult r = register_with_marker_offset(set, cell.testbed.nominal);

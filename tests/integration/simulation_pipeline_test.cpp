@@ -7,13 +7,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "noise_free.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/experiments/testbed_calibration.hpp"
 #include "vrreg/io/measurement_csv.hpp"
-#include "vrreg/robot_io/simulation_csv.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
 #include "vrreg/planning/strategy2_labels.hpp"
 #include "vrreg/registration/rigid.hpp"
+#include "vrreg/robot_io/simulation_csv.hpp"
 #include "vrreg_test.hpp"
 
 namespace vrreg {
@@ -21,12 +22,7 @@ namespace {
 
 using simulation::Dataset;
 
-simulation::TestbedErrorModel perfect(const simulation::Testbed& testbed) {
-  simulation::TestbedErrorModel e;
-  e.tracker = testbed.default_errors.tracker;
-  e.tracker.noise_sigma_m.setZero();
-  return e;
-}
+using testing::noise_free_tracker_only;
 
 std::string csv_text(const simulation::SimulatedDataset& data) {
   return io::format_measurement_csv(io::simulated_readings(data),
@@ -36,7 +32,7 @@ std::string csv_text(const simulation::SimulatedDataset& data) {
 TEST(SimulationPipeline, PerfectTestbedGivesRigidDataAndTheTrackerPoseBack) {
   const simulation::Testbed testbed = simulation::ur5_testbed();
   const simulation::SimulatedDataset data =
-      simulation::simulate_dataset(testbed, Dataset::kA1, {9, perfect(testbed)});
+      simulation::simulate_dataset(testbed, Dataset::kA1, {9, noise_free_tracker_only(testbed)});
   std::istringstream in(csv_text(data));
   const MeasurementSet set = io::parse_measurement_csv(in, "perfect.csv");
   ASSERT_EQ(set.locations.size(), 1287u);

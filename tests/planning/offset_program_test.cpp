@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "planning_fixtures.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/robots.hpp"
@@ -19,9 +20,7 @@ namespace {
 
 using kinematics::SerialChain;
 
-SerialChain ur5_with_sphere() {
-  return kinematics::ur5().with_tool(Eigen::Isometry3d(Eigen::Translation3d(0, 0, 0.06)));
-}
+using testing::ur5_with_sphere;
 
 PlanResult small_plan(const SerialChain& chain, double tilt_deg, OffsetPoseSummary* summary) {
   PlanOptions o;

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "planning_fixtures.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/inverse_kinematics.hpp"
@@ -17,9 +18,7 @@ namespace {
 
 using kinematics::SerialChain;
 
-SerialChain ur5_with_sphere() {
-  return kinematics::ur5().with_tool(Eigen::Isometry3d(Eigen::Translation3d(0, 0, 0.06)));
-}
+using testing::ur5_with_sphere;
 
 std::vector<PartPoint> four_parts() {
   return {{"hole_A", {0.42, -0.14, 0.25}},
