@@ -92,6 +92,14 @@ void run_register_with_marker_offset(const std::string& fiducials_path,
     j["translation_std_mm"] = json_mm3(e.translation_std_m);
     j["rotation_std_mrad"] = {1e3 * e.rotation_std_rad.x(), 1e3 * e.rotation_std_rad.y(),
                               1e3 * e.rotation_std_rad.z()};
+    if (e.has_marker_orientation) {
+      const Eigen::Quaterniond& q = e.q_flange_marker;
+      j["q_flange_marker_xyzw"] = {q.x(), q.y(), q.z(), q.w()};
+      j["marker_rotation_std_deg"] = {units::rad_to_deg(e.marker_rotation_std_rad.x()),
+                                      units::rad_to_deg(e.marker_rotation_std_rad.y()),
+                                      units::rad_to_deg(e.marker_rotation_std_rad.z())};
+      j["sigma_orientation_deg"] = units::rad_to_deg(e.sigma_rad);
+    }
     j["fre_mm"] = units::m_to_mm(e.fre_m);
     j["orientation_spread_rad"] = e.orientation_spread;
     j["condition_number"] = e.condition_number;
@@ -120,6 +128,17 @@ void run_register_with_marker_offset(const std::string& fiducials_path,
             : "not given: --joint-offset-sigma-deg";
     std::printf("    from joint zero offsets     %s mm  (%s)\n",
                 format_mm3(result.p_std_joint_offsets_m, 4).c_str(), sigma.c_str());
+  }
+  if (e.has_marker_orientation) {
+    const Eigen::Quaterniond& q = e.q_flange_marker;
+    std::printf("  marker orientation q_flange_marker  x y z w = % .9f % .9f % .9f % .9f  (marker "
+                "axes in the flange frame, from the sensor's orientations)\n",
+                q.x(), q.y(), q.z(), q.w());
+    std::printf("    standard uncertainty        %.4f %.4f %.4f deg  (per flange axis); "
+                "orientation noise %.4f deg\n",
+                units::rad_to_deg(e.marker_rotation_std_rad.x()),
+                units::rad_to_deg(e.marker_rotation_std_rad.y()),
+                units::rad_to_deg(e.marker_rotation_std_rad.z()), units::rad_to_deg(e.sigma_rad));
   }
   std::printf("  rotation R (sensor -> robot)  [% .9f % .9f % .9f]\n", r(0, 0), r(0, 1), r(0, 2));
   std::printf("                                [% .9f % .9f % .9f]\n", r(1, 0), r(1, 1), r(1, 2));

@@ -1,5 +1,6 @@
 #include "location_accumulator.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "csv_fields.hpp"
@@ -97,6 +98,28 @@ void LocationAccumulator::add(const MeasurementRow& row, std::size_t line) {
   const Eigen::Vector3d delta = row.sensor_m - location.sensor_m;
   location.sensor_m += delta / static_cast<double>(location.n_readings);
   location.sensor_sq_dev_m2 += delta.cwiseProduct(row.sensor_m - location.sensor_m);
+  if (row.q_sensor_marker) {
+    if (orientation_sums_.size() <= index) orientation_sums_.resize(index + 1, Eigen::Matrix4d::Zero());
+    if (!location.q_sensor_marker) location.q_sensor_marker = row.q_sensor_marker;
+    const Eigen::Vector4d q = row.q_sensor_marker->coeffs();
+    orientation_sums_[index] += q * q.transpose();
+  }
+}
+
+// The mean orientation of the repeats: the eigenvector of the largest eigenvalue of sum q q'
+// (Markley et al. 2007, the rotation minimising the summed squared chordal distances); q and -q
+// count alike, so no sign alignment is needed. The sign of the first reading is kept.
+std::vector<Location> LocationAccumulator::take() {
+  for (std::size_t i = 0; i < orientation_sums_.size() && i < locations_.size(); ++i) {
+    Location& location = locations_[i];
+    if (!location.q_sensor_marker || location.n_readings < 2) continue;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eig(orientation_sums_[i]);
+    Eigen::Vector4d mean = eig.eigenvectors().col(3);
+    if (mean.dot(location.q_sensor_marker->coeffs()) < 0.0) mean = -mean;
+    location.q_sensor_marker = Eigen::Quaterniond(mean(3), mean(0), mean(1), mean(2)).normalized();
+  }
+  orientation_sums_.clear();
+  return std::move(locations_);
 }
 
 }  // namespace vrreg::io::detail

@@ -25,7 +25,8 @@ class LocationAccumulator {
   /// Number of rows added so far.
   [[nodiscard]] std::size_t rows() const { return rows_; }
   /// The locations in the order of their first reading.
-  std::vector<Location> take() { return std::move(locations_); }
+  /// The locations in the order of their first reading; orientations averaged (see .cpp).
+  std::vector<Location> take();
 
  private:
   struct PointEntry {
@@ -44,6 +45,7 @@ class LocationAccumulator {
   double joint_tolerance_rad_;
   std::unordered_map<std::string, PointEntry> points_;
   std::vector<Location> locations_;
+  std::vector<Eigen::Matrix4d> orientation_sums_;  ///< per location: sum of q q' over readings
   std::string key_;
   std::size_t rows_ = 0;
 };

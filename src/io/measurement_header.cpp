@@ -13,7 +13,16 @@ namespace {
 constexpr int kMaxJoints = 64;
 constexpr const char* kAllowed =
     "allowed: point, role, robot_x_mm, robot_y_mm, robot_z_mm, sensor_x_mm, sensor_y_mm, "
-    "sensor_z_mm (or all six with _m), config, q1_rad..qN_rad (or _deg), repeat";
+    "sensor_z_mm (or all six with _m), config, q1_rad..qN_rad (or _deg), repeat, sensor_qx, sensor_qy, sensor_qz, sensor_qw";
+
+// "sensor_qx".."sensor_qw": the marker's orientation quaternion (unitless); index x,y,z,w = 0..3.
+std::optional<int> orientation_column(const std::string& lower) {
+  static constexpr const char* kNames[] = {"sensor_qx", "sensor_qy", "sensor_qz", "sensor_qw"};
+  for (int k = 0; k < 4; ++k) {
+    if (lower == kNames[k]) return k;
+  }
+  return std::nullopt;
+}
 
 // Splits "<stem>_<suffix>" at the last underscore; the suffix is empty when there is none.
 std::pair<std::string, std::string> split_suffix(const std::string& name) {
@@ -100,6 +109,11 @@ class HeaderParser {
                              : cols.repeat) = index;
         continue;
       }
+      if (const auto component = orientation_column(lower)) {
+        claim(lower, index, cols);
+        cols.orientation[static_cast<std::size_t>(*component)] = index;
+        continue;
+      }
       const auto [stem, unit] = split_suffix(lower);
       if (const auto coordinate = coordinate_stem(stem)) {
         if (unit.empty()) fail("column '" + shown + "' has no unit suffix (_mm or _m)");
@@ -157,6 +171,17 @@ class HeaderParser {
         missing("robot_" + suffix);
       }
       if (cols.sensor[static_cast<std::size_t>(axis)] < 0) missing("sensor_" + suffix);
+    }
+    int n_orientation = 0;
+    for (const int index : cols.orientation) n_orientation += index >= 0 ? 1 : 0;
+    if (n_orientation != 0 && n_orientation != 4) {
+      for (int k = 0; k < 4; ++k) {
+        if (cols.orientation[static_cast<std::size_t>(k)] < 0) {
+          fail(std::string("missing column 'sensor_q") + "xyzw"[k] +
+               "' (the marker orientation needs all of sensor_qx, sensor_qy, sensor_qz, "
+               "sensor_qw, or none)");
+        }
+      }
     }
     for (std::size_t k = 0; k < cols.joints.size(); ++k) {
       if (cols.joints[k] == MeasurementColumns::kAbsent) {

@@ -1,5 +1,7 @@
 #include "measurement_row.hpp"
 
+#include <cmath>
+
 #include "csv_fields.hpp"
 #include "text_checks.hpp"
 #include "vrreg/core/units.hpp"
@@ -86,6 +88,17 @@ class RowParser {
     for (std::size_t k = 0; k < columns_.joints.size(); ++k) {
       const double value = number(columns_.joints[k]);
       row.q_rad[k] = columns_.joints_in_degrees ? units::deg_to_rad(value) : value;
+    }
+    row.q_sensor_marker.reset();
+    if (columns_.has_orientation()) {
+      const auto& c = columns_.orientation;
+      const Eigen::Quaterniond q(number(c[3]), number(c[0]), number(c[1]), number(c[2]));
+      if (!(std::abs(q.norm() - 1.0) <= kQuaternionNormTolerance)) {
+        fail("sensor_qx..sensor_qw: the quaternion's norm is " + format_double(q.norm()) +
+             ", not 1 (within " + format_double(kQuaternionNormTolerance) +
+             "); give the marker orientation as a unit quaternion");
+      }
+      row.q_sensor_marker = q.normalized();
     }
   }
 

@@ -1,5 +1,6 @@
 #pragma once
 // One data row of a measurement CSV, parsed and converted to SI units.
+#include <Eigen/Geometry>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -20,7 +21,11 @@ struct MeasurementRow {
   std::optional<int> config;
   std::vector<double> q_rad;
   std::optional<int> repeat;
+  std::optional<Eigen::Quaterniond> q_sensor_marker;  ///< normalised, when the file has it
 };
+
+/// A quaternion read from a file is accepted when its norm is within this of 1, then normalised.
+inline constexpr double kQuaternionNormTolerance = 1e-3;
 
 /// Parses the trimmed `fields` of line `line` into `row`; throws FileError on any bad value.
 void parse_measurement_row(const std::vector<std::string_view>& fields,

@@ -173,6 +173,18 @@ Eigen::Vector3d joint_offset_std(const MarkerOffsetResult& e,
   return cov.diagonal().cwiseMax(0.0).cwiseSqrt();
 }
 
+// The sensor's marker orientations of `rows` when every one has one (a rigid-body tracker: the
+// estimator then also uses them); empty otherwise.
+std::vector<Eigen::Quaterniond> marker_orientations(const MeasurementSet& set,
+                                                    const std::vector<std::size_t>& rows) {
+  std::vector<Eigen::Quaterniond> q;
+  for (const std::size_t i : rows) {
+    if (!set.locations[i].q_sensor_marker) return {};
+    q.push_back(*set.locations[i].q_sensor_marker);
+  }
+  return q;
+}
+
 }  // namespace
 
 MarkerOffsetRegisterResult register_with_marker_offset(const MeasurementSet& fiducials,
@@ -190,7 +202,8 @@ MarkerOffsetRegisterResult register_with_marker_offset(const MeasurementSet& fid
          "the marker offset needs at least 5 fiducial poses, found " + std::to_string(rows.size()));
   }
   MarkerOffsetRegisterResult out;
-  out.estimate = estimate_marker_offset(flange, fiducials.sensor_points(rows), estimation);
+  out.estimate = estimate_marker_offset(flange, fiducials.sensor_points(rows),
+                                        marker_orientations(fiducials, rows), estimation);
   if (!out.estimate.ok()) return out;
   out.p_std_joint_offsets_m = joint_offset_std(out.estimate, flange_chain, fiducials, rows, flange,
                                                estimation.joint_offset_sigma_rad);

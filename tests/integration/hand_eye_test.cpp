@@ -97,6 +97,37 @@ TEST(HandEye, NoiseFreeCellGivesOffsetAndTransformBack) {
   EXPECT_EQ(model.fiducials.size(), 6u * 64u);
 }
 
+// A rigid-body tracker also gives the marker's orientation: the front door uses it and returns
+// the marker's orientation on the flange with everything else unchanged.
+TEST(HandEye, NoiseFreeCellWithMarkerOrientations) {
+  const HandEyeCell cell = hand_eye_plan(20.0);
+  simulation::SimulationOptions options;
+  options.seed = 3;
+  options.errors = noise_free_tracker_only(cell.testbed);
+  options.marker_flange_m = simulation::kRealisticMarkerFlangeM;
+  MeasurementSet set = simulate(cell, options);
+  const RigidTransform truth =
+      simulation::tracker_pose(options.errors->tracker, cell.testbed.volume_centre_m);
+  const Eigen::Matrix3d R_flange_marker =
+      Eigen::AngleAxisd(0.3, Eigen::Vector3d(1.0, -2.0, 0.5).normalized()).toRotationMatrix();
+  const kinematics::SerialChain flange_chain =
+      cell.testbed.nominal.with_tool(Eigen::Isometry3d::Identity());
+  for (Location& loc : set.locations) {
+    const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(
+        loc.q_rad.data(), static_cast<Eigen::Index>(loc.q_rad.size()));
+    loc.q_sensor_marker = Eigen::Quaterniond(
+        truth.rotation.transpose() *
+        kinematics::forward_kinematics(flange_chain, q).linear() * R_flange_marker);
+  }
+  const MarkerOffsetRegisterResult r = register_with_marker_offset(set, cell.testbed.nominal);
+  ASSERT_TRUE(r.ok()) << r.estimate.message;
+  ASSERT_TRUE(r.estimate.has_marker_orientation);
+  EXPECT_EIGEN_NEAR(r.estimate.q_flange_marker.toRotationMatrix(), R_flange_marker, 1e-9);
+  EXPECT_EIGEN_NEAR(r.estimate.p_flange_marker_m, simulation::kRealisticMarkerFlangeM, 1e-9);
+  EXPECT_EIGEN_NEAR(r.registered->model.T_robot_sensor.rotation, truth.rotation, 1e-9);
+  EXPECT_EIGEN_NEAR(r.registered->model.T_robot_sensor.translation_m, truth.translation_m, 1e-9);
+}
+
 TEST(HandEye, PaperLayoutWithOneOrientationIsUnobservable) {
   const HandEyeCell cell = hand_eye_plan(0.0);
   simulation::SimulationOptions options;

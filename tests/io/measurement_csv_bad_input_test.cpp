@@ -233,5 +233,26 @@ TEST_F(BadCsv, DirectoryInsteadOfFile) {
       throws_file_error([&] { (void)read_measurement_csv(path); }, path, 0, "is a directory"));
 }
 
+CsvReadOptions sensor_only() {
+  CsvReadOptions options;
+  options.require_robot = false;
+  return options;
+}
+
+TEST_F(BadCsv, MarkerOrientationNeedsAllFourColumns) {
+  EXPECT_TRUE(fails("point,role,sensor_x_mm,sensor_y_mm,sensor_z_mm,sensor_qx,sensor_qy,sensor_qw\n"
+                    "A,target,1,2,3,0,0,1\n",
+                    1, "missing column 'sensor_qz'", sensor_only()));
+}
+
+TEST_F(BadCsv, MarkerOrientationNotUnit) {
+  const std::string header =
+      "point,role,sensor_x_mm,sensor_y_mm,sensor_z_mm,sensor_qx,sensor_qy,sensor_qz,sensor_qw\n";
+  EXPECT_TRUE(fails(header + "A,target,1,2,3,0,0,0,1\nB,target,1,2,3,0,0,0,1.01\n", 3,
+                    "not 1", sensor_only()));
+  EXPECT_TRUE(fails(header + "A,target,1,2,3,0,0,0,0\n", 2, "not 1", sensor_only()));
+  EXPECT_TRUE(fails(header + "A,target,1,2,3,0,0,x,1\n", 2, "sensor_qz", sensor_only()));
+}
+
 }  // namespace
 }  // namespace vrreg::io

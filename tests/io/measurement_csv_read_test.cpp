@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -213,6 +214,53 @@ TEST(ReadCsv, ManyRepeatsOfFewLocationsStream) {
   const MeasurementSet set = parse(text);
   ASSERT_EQ(set.locations.size(), 4u);
   EXPECT_EQ(set.locations[0].n_readings, rows / 4);
+}
+
+// Marker orientations (rigid-body trackers): four unitless columns, normalised, repeats averaged
+// as rotations (q and -q alike).
+TEST(ReadCsv, MarkerOrientationColumns) {
+  const std::string header =
+      "point,role,robot_x_mm,robot_y_mm,robot_z_mm,sensor_x_mm,sensor_y_mm,sensor_z_mm,"
+      "repeat,sensor_qx,sensor_qy,sensor_qz,SENSOR_QW\n";
+  const double c = std::cos(0.05);
+  const double s = std::sin(0.05);
+  // Repeats of A: rotations by +0.1 and -0.1 rad about z, the second written as -q; mean: identity.
+  const std::string text = header + "A,fiducial,1,2,3,4,5,6,0,0,0," + std::to_string(s) + "," +
+                           std::to_string(c) + "\n" + "A,fiducial,1,2,3,4,5,6,1,0,0," +
+                           std::to_string(s) + "," + std::to_string(-c) + "\n" +
+                           "B,target,1,2,3,4,5,6,0,0,0,0,1.0004\n";
+  const MeasurementSet set = parse(text);
+  ASSERT_EQ(set.locations.size(), 2u);
+  ASSERT_TRUE(set.locations[0].q_sensor_marker.has_value());
+  const Eigen::Quaterniond a = *set.locations[0].q_sensor_marker;
+  EXPECT_NEAR(std::abs(a.w()), 1.0, 1e-12);
+  EXPECT_NEAR(a.vec().norm(), 0.0, 1e-6);  // std::to_string keeps 6 decimals
+  ASSERT_TRUE(set.locations[1].q_sensor_marker.has_value());
+  EXPECT_NEAR(set.locations[1].q_sensor_marker->norm(), 1.0, 1e-15);
+  EXPECT_FALSE(parse(kHeader + "A,fiducial,1,2,3,4,5,6\n").locations[0].q_sensor_marker);
+}
+
+TEST(ReadCsv, MarkerOrientationAverageOfManyRepeats) {
+  // Readings scattered 1 mrad about a rotation, half of them written with the opposite sign.
+  Random rng(5);
+  const Eigen::Quaterniond truth(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, 2, 3).normalized()));
+  std::string text =
+      "point,role,sensor_x_mm,sensor_y_mm,sensor_z_mm,sensor_qx,sensor_qy,sensor_qz,sensor_qw\n";
+  char line[256];
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Vector3d e = rng.normal3(1e-3);
+    Eigen::Quaterniond q = truth * Eigen::Quaterniond(Eigen::AngleAxisd(e.norm(), e.normalized()));
+    if (k % 2 == 1) q.coeffs() = -q.coeffs();
+    std::snprintf(line, sizeof line, "A,target,0,0,0,%.17g,%.17g,%.17g,%.17g\n", q.x(), q.y(),
+                  q.z(), q.w());
+    text += line;
+  }
+  CsvReadOptions options;
+  options.require_robot = false;
+  const Location a = parse(text, options).locations[0];
+  ASSERT_TRUE(a.q_sensor_marker);
+  // The mean of 200 readings of 1 mrad per axis: within ~4 x 1e-3 / sqrt(200) of the truth.
+  EXPECT_LT(a.q_sensor_marker->angularDistance(truth), 3e-4);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
 // A measurement set: locations measured in both frames, after averaging repeat readings.
 // Plain data shared by io (which fills it) and the domain modules (which read it).
+#include <Eigen/Geometry>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -24,6 +25,9 @@ struct Location {
   int n_readings = 0;             ///< number of repeat readings averaged into sensor_m
   Eigen::Vector3d sensor_sq_dev_m2 = Eigen::Vector3d::Zero();  ///< per-axis sum of squared deviations
   std::vector<double> q_rad;      ///< joint angles, empty when absent
+  /// The marker's orientation in the sensor frame (rigid-body trackers), averaged over the
+  /// repeat readings; empty when the file has no sensor_qx..qw columns.
+  std::optional<Eigen::Quaterniond> q_sensor_marker;
   double weight = 1.0;            ///< registration weight (Eq. 2); files give every location 1
   std::size_t source_line = 0;    ///< first line of the file this location came from (1-based)
 };

@@ -5,6 +5,11 @@
 //   R y_j + tau = R_flange_j p + t_flange_j
 // A closed-form linear start (the model is linear in R, tau, p before R is projected onto SO(3)),
 // then Levenberg-Marquardt on (rotation, tau, p).
+// When the sensor also gives the marker's orientation R_sensor_marker_j (a rigid-body tracker),
+// rotation residuals are added: R R_sensor_marker_j = R_flange_j R_flange_marker, with the
+// marker's orientation on the flange R_flange_marker a further unknown (3 parameters); position
+// and rotation residuals are weighted by their noise, estimated from the residuals (variance
+// components) unless the orientation noise is given.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <string>
@@ -25,6 +30,9 @@ struct MarkerOffsetOptions {
   /// (pipeline): propagated into p's uncertainty (systematic flange errors look like another
   /// offset). 0: the stated uncertainty covers noise only.
   double joint_offset_sigma_rad = 0.0;
+  /// Standard deviation of the sensor's marker orientation, per axis [rad], when orientations
+  /// are given. 0: estimated from the rotation residuals (with the position noise).
+  double orientation_sigma_rad = 0.0;
   void validate() const;
 };
 
@@ -59,6 +67,15 @@ struct MarkerOffsetResult {
   /// Condition number of the Jacobian with unit-norm columns at the solution (1 is ideal).
   double condition_number = 0.0;
   int iterations = 0;  ///< Levenberg-Marquardt iterations taken
+  /// Set when marker orientations were given: the marker's orientation in the flange frame and
+  /// its standard uncertainty (small angles, flange axes), the orientation noise used
+  /// (estimated or given), and the rotation residual angle per pose. The covariance above is
+  /// then the marginal one of (rotation, tau, p).
+  bool has_marker_orientation = false;
+  Eigen::Quaterniond q_flange_marker = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d marker_rotation_std_rad = Eigen::Vector3d::Zero();
+  double sigma_rad = 0.0;
+  Eigen::VectorXd rotation_residuals_rad;
   [[nodiscard]] bool ok() const { return status == MarkerOffsetStatus::kOk; }
 };
 
@@ -68,6 +85,15 @@ struct MarkerOffsetResult {
 /// fewer than 5 poses or non-finite values; an unobservable offset is a status, not an exception.
 MarkerOffsetResult estimate_marker_offset(const std::vector<Eigen::Isometry3d>& T_robot_flange,
                                           const ConstPoints3Ref& markers_sensor_m,
+                                          const MarkerOffsetOptions& options = {});
+
+/// The same with the marker's orientation measured at every pose too: q_sensor_marker[j] the
+/// marker frame's rotation in the sensor frame (unit quaternion; normalised here). Empty: as
+/// above. The offset p still needs the flange orientations to vary (the rotation residuals do
+/// not involve p or tau): the observability check is the same.
+MarkerOffsetResult estimate_marker_offset(const std::vector<Eigen::Isometry3d>& T_robot_flange,
+                                          const ConstPoints3Ref& markers_sensor_m,
+                                          const std::vector<Eigen::Quaterniond>& q_sensor_marker,
                                           const MarkerOffsetOptions& options = {});
 
 /// The orientation spread of a set of flange poses (see MarkerOffsetResult::orientation_spread).
