@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "noise_free.hpp"
+#include "simulation_test_support.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/metrics/errors.hpp"
@@ -64,7 +64,7 @@ MeasurementSet simulate(const HandEyeCell& cell, simulation::SimulationOptions o
       simulation::simulate_plan(cell.testbed, commanded, options));
 }
 
-using testing::noise_free_tracker_only;
+using testing::perfect_errors;
 
 // The set with every robot position from forward kinematics and a given marker offset.
 MeasurementSet with_known_offset(const MeasurementSet& set, const kinematics::SerialChain& robot,
@@ -79,7 +79,7 @@ TEST(HandEye, NoiseFreeCellGivesOffsetAndTransformBack) {
   const HandEyeCell cell = hand_eye_plan(20.0);
   simulation::SimulationOptions options;
   options.seed = 3;
-  options.errors = noise_free_tracker_only(cell.testbed);
+  options.errors = perfect_errors(cell.testbed);
   options.marker_flange_m = simulation::kRealisticMarkerFlangeM;
   const MeasurementSet set = simulate(cell, options);
   const MarkerOffsetRegisterResult r = register_with_marker_offset(set, cell.testbed.nominal);
@@ -103,7 +103,7 @@ TEST(HandEye, NoiseFreeCellWithMarkerOrientations) {
   const HandEyeCell cell = hand_eye_plan(20.0);
   simulation::SimulationOptions options;
   options.seed = 3;
-  options.errors = noise_free_tracker_only(cell.testbed);
+  options.errors = perfect_errors(cell.testbed);
   options.marker_flange_m = simulation::kRealisticMarkerFlangeM;
   MeasurementSet set = simulate(cell, options);
   const RigidTransform truth =
@@ -116,8 +116,8 @@ TEST(HandEye, NoiseFreeCellWithMarkerOrientations) {
     const Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(
         loc.q_rad.data(), static_cast<Eigen::Index>(loc.q_rad.size()));
     loc.q_sensor_marker = Eigen::Quaterniond(
-        truth.rotation.transpose() *
-        kinematics::forward_kinematics(flange_chain, q).linear() * R_flange_marker);
+        truth.rotation.transpose() * kinematics::forward_kinematics(flange_chain, q).linear() *
+        R_flange_marker);
   }
   const MarkerOffsetRegisterResult r = register_with_marker_offset(set, cell.testbed.nominal);
   ASSERT_TRUE(r.ok()) << r.estimate.message;

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "noise_free.hpp"
+#include "simulation_test_support.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/experiments/testbed_calibration.hpp"
 #include "vrreg/io/measurement_csv.hpp"
@@ -22,7 +22,7 @@ namespace {
 
 using simulation::Dataset;
 
-using testing::noise_free_tracker_only;
+using testing::perfect_errors;
 
 std::string csv_text(const simulation::SimulatedDataset& data) {
   return io::format_measurement_csv(io::simulated_readings(data),
@@ -32,7 +32,7 @@ std::string csv_text(const simulation::SimulatedDataset& data) {
 TEST(SimulationPipeline, PerfectTestbedGivesRigidDataAndTheTrackerPoseBack) {
   const simulation::Testbed testbed = simulation::ur5_testbed();
   const simulation::SimulatedDataset data =
-      simulation::simulate_dataset(testbed, Dataset::kA1, {9, noise_free_tracker_only(testbed)});
+      simulation::simulate_dataset(testbed, Dataset::kA1, {9, perfect_errors(testbed)});
   std::istringstream in(csv_text(data));
   const MeasurementSet set = io::parse_measurement_csv(in, "perfect.csv");
   ASSERT_EQ(set.locations.size(), 1287u);
