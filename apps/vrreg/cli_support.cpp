@@ -16,9 +16,13 @@ nlohmann::json json_mm3(const Eigen::Vector3d& metres) {
 void InterpolationFlags::add_to(CLI::App& command) {
   command
       .add_option("--interpolation", method,
-                  "how corrections reach targets: auto (grid if the fiducials hold a complete "
-                  "grid, else scattered), grid, scattered, octuplet")
-      ->check(CLI::IsMember({"auto", "grid", "scattered", "octuplet"}));
+                  "how corrections reach targets. The paper's linear weights (Eq. 7): linear "
+                  "(grid if the fiducials hold a complete grid, else scattered; the default), "
+                  "grid, scattered, octuplet. Models of the whole field (docs/field-models.md): "
+                  "trilinear (finest lattice, empty nodes filled), kriging, rbf, joint (needs "
+                  "joints and --robot), auto (the lowest cross-validated error)")
+      ->check(CLI::IsMember({"linear", "grid", "scattered", "octuplet", "trilinear", "kriging",
+                             "rbf", "joint", "auto"}));
   command
       .add_option("--cube-mm", cube_mm,
                   "octuplet cube edge in mm (fiducials at the 8 corners around each target)")

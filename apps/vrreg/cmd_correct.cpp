@@ -4,6 +4,8 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "field_model_cli.hpp"
+#include "robot_cli.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/io/results_csv.hpp"
@@ -18,6 +20,7 @@ struct CorrectArgs {
   std::optional<int> config;
   InterpolationFlags interpolation;
   std::string output;
+  std::string robot;
   bool json = false;
 };
 
@@ -27,6 +30,7 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   CorrectOptions options;
   options.config = args.config;
   options.interpolation = args.interpolation.choice();
+  if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
   const CorrectResult r =
       correct(model, io::read_measurement_csv(args.points, read_options), options);
   const TargetCorrection& c = r.correction;
@@ -40,13 +44,17 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
     j["interpolation"] = to_string(c.method_used);
     j["layout"] = c.layout;
     j["output"] = args.output;
+    add_predicted_sd_json(c, std::nullopt, j);
+    if (r.cross_validation) j["cross_validation"] = cross_validation_json(*r.cross_validation);
     print_json(j);
     return;
   }
   std::printf("corrected %zu points from %s with model %s\n", n_points, args.points.c_str(),
               args.model.c_str());
+  if (r.cross_validation) print_cross_validation(*r.cross_validation);
   std::printf("  interpolation                 %s: %s\n", to_string(c.method_used),
               c.layout.c_str());
+  print_predicted_sd(c, std::nullopt);
   if (c.n_flagged > 0) {
     std::printf(
         "  not correctable               %d points (outside the fiducials; status column "
@@ -77,6 +85,9 @@ void add_correct_command(CLI::App& app) {
   args->interpolation.add_to(*cmd);
   add_output_option(*cmd, "-o,--output", args->output, "write corrected positions (CSV, mm) here")
       ->required();
+  cmd->add_option("--robot", args->robot,
+                  "with --interpolation joint or auto: the robot whose joints the file gives (ur5, "
+                  "lwr4, ... or a robot file, its tool the marker); default: the model's");
   cmd->add_flag("--json", args->json, "print a JSON summary instead of the table");
   cmd->callback([args] { run_correct(*args); });
 }

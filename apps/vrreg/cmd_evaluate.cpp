@@ -5,6 +5,8 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "field_model_cli.hpp"
+#include "robot_cli.hpp"
 #include "strategy_cli.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/measurement_csv.hpp"
@@ -22,6 +24,7 @@ struct EvaluateArgs {
   InterpolationFlags interpolation;
   StrategyFlags strategy;
   std::string per_target;
+  std::string robot;
   bool json = false;
 };
 
@@ -30,6 +33,7 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   options.config = args.config;
   options.interpolation = args.interpolation.choice();
   apply_evaluate_flags(args.strategy, options);
+  if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
   const EvaluateResult r = evaluate(model, io::read_measurement_csv(args.targets), options);
   const ImprovementSummary& s = r.summary;
   const TargetCorrection& c = r.correction;
@@ -60,6 +64,8 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
     j["bad_targets"] = bad;
     j["unc_max_tre_mm"] = units::m_to_mm(unc.size() ? unc.maxCoeff() : 0.0);
     j["cor_max_tre_mm"] = units::m_to_mm(cor.size() ? cor.maxCoeff() : 0.0);
+    add_predicted_sd_json(c, r.calibration, j);
+    if (r.cross_validation) j["cross_validation"] = cross_validation_json(*r.cross_validation);
     add_strategy_json(j, model, relabelled);
     if (r.strategy == planning::Strategy::kAsListed &&
         model.procedure2.strategy == planning::Strategy::kNone) {
@@ -72,6 +78,7 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
               args.model.c_str(),
               config ? (" (config " + std::to_string(*config) + ")").c_str() : "");
   print_strategy(model, relabelled);
+  if (r.cross_validation) print_cross_validation(*r.cross_validation);
   std::printf("  interpolation                 %s: %s\n", to_string(c.method_used),
               c.layout.c_str());
   if (c.n_flagged > 0) {
@@ -85,6 +92,7 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   std::printf("  max TRE                       %8s mm  %8s mm\n",
               format_mm(unc.size() ? unc.maxCoeff() : 0.0).c_str(),
               format_mm(cor.size() ? cor.maxCoeff() : 0.0).c_str());
+  print_predicted_sd(c, r.calibration);
   std::printf("  gamma = (unc - cor) / unc     %.1f %%\n", 100.0 * s.gamma);
   std::printf("  N_bad (TRE got worse)         %d of %d", s.n_bad, s.n_targets);
   if (!bad.empty()) {
@@ -119,6 +127,9 @@ void add_evaluate_command(CLI::App& app) {
   args->strategy.add_to(*cmd, false);
   add_output_option(*cmd, "--per-target", args->per_target,
                     "write per-target errors (CSV, mm) here");
+  cmd->add_option("--robot", args->robot,
+                  "with --interpolation joint or auto: the robot whose joints the files give (ur5, "
+                  "lwr4, ... or a robot file, its tool the marker); default: the model's");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_evaluate(*args); });
 }

@@ -6,6 +6,8 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "field_model_cli.hpp"
+#include "robot_cli.hpp"
 #include "marker_offset_cli.hpp"
 #include "strategy_cli.hpp"
 #include "vrreg/core/check.hpp"
@@ -48,6 +50,9 @@ RegisterOptions register_options(const RegisterArgs& args) {
   options.interpolation = args.interpolation.settings();
   options.procedure2 = register_procedure2(args.strategy);
   options.sigma_l.force_exact = args.exact_sigma_l;
+  if (!args.marker_offset.enabled() && !args.marker_offset.robot.empty()) {
+    options.robot = robot_from_args(args.marker_offset.robot, {});  // the joint-space field model
+  }
   return options;
 }
 
@@ -97,7 +102,8 @@ void print_robust(const RobustReport& report) {
 void run_register_unchecked(const RegisterArgs& args) {
   const RegisterOptions options = register_options(args);
   options.validate();  // flag combinations before reading the file
-  args.marker_offset.check();
+  args.marker_offset.check(options.interpolation.method == InterpolationMethod::kJoint ||
+                           options.interpolation.method == InterpolationMethod::kAuto);
   if (args.marker_offset.enabled()) {  // hand-eye registration: its own report (marker_offset_cli)
     run_register_with_marker_offset(args.fiducials, args.marker_offset, options, args.output,
                                     args.json);
@@ -147,6 +153,10 @@ void run_register_unchecked(const RegisterArgs& args) {
     if (rho_value) j["rho"] = *rho_value;
     j["rejected"] = rejected;
     if (result.robust) j["robust"] = robust_json(*result.robust, options.robust->false_alarm_rate);
+    if (result.cross_validation) {
+      j["cross_validation"] = cross_validation_json(*result.cross_validation);
+      j["interpolation"] = to_string(model.interpolation.method);
+    }
     j["model"] = args.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(args.output);
     add_strategy_json(j, model, relabelled);
     print_json(j);
@@ -195,6 +205,11 @@ void run_register_unchecked(const RegisterArgs& args) {
   }
   std::printf("  spread (principal axes)       %s mm\n", format_mm3(reg.spread_m, 1).c_str());
   if (result.robust) print_robust(*result.robust);
+  if (result.cross_validation) {
+    print_cross_validation(*result.cross_validation);
+    std::printf("  interpolation stored          %s (evaluate's and correct's default)\n",
+                to_string(model.interpolation.method));
+  }
   if (!args.output.empty()) std::printf("  model written to %s\n", args.output.c_str());
 }
 

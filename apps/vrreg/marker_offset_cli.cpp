@@ -45,9 +45,10 @@ void MarkerOffsetFlags::add_to(CLI::App& command) {
       ->capture_default_str();
 }
 
-void MarkerOffsetFlags::check() const {
-  VRREG_THROW_UNLESS(robot.empty() || enabled(),
-                     "--robot is for --estimate-marker-offset or --marker-offset-mm");
+void MarkerOffsetFlags::check(bool field_model) const {
+  VRREG_THROW_UNLESS(robot.empty() || enabled() || field_model,
+                     "--robot is for --estimate-marker-offset, --marker-offset-mm or "
+                     "--interpolation joint|auto");
   VRREG_THROW_UNLESS(!enabled() || !robot.empty(),
                      (estimate ? "--estimate-marker-offset" : "--marker-offset-mm")
                          << " needs --robot (the robot the joints are for)");

@@ -26,7 +26,7 @@ struct RegisterKwargs {
   bool scale = false;
   bool robust = false;
   std::optional<double> sigma_rep_m;
-  std::string interpolation = "auto";
+  std::string interpolation = "linear";
   std::optional<double> cube_edge_m;
   int strategy = 0;
   std::string joint_norm = "l2";
@@ -79,8 +79,9 @@ config: use only this configuration label. scale: also fit a uniform scale (not 
 robust: reject fiducials whose correction disagrees with their neighbours' (a displaced or
   swapped marker; result.outliers) and fill them from the neighbours.
 sigma_rep: robot repeatability [m] for sigma_noise and rho.
-interpolation: 'auto', 'grid', 'scattered' or 'octuplet' (stored as evaluate's and correct's
-  default); cube_edge: octuplet cube edge [m]. strategy: Procedure 2 strategy 0-3 (section 4.4),
+interpolation: 'linear' (grid or scattered), 'grid', 'scattered', 'octuplet', or a field
+  model: 'trilinear', 'kriging', 'rbf', 'joint', 'auto' (by cross-validation); stored as
+  evaluate's and correct's default. cube_edge: octuplet cube edge [m]. strategy: Procedure 2 strategy 0-3 (section 4.4),
   joint_norm 'l2' or 'linf', seed (strategy 3). rigid_body=False skips sigma_L, which costs
   O(N^2) pairs (use it for very large N).
 Raises ValueError (vrreg.InputError) on bad shapes, NaN, fewer than 3 or collinear points.)doc";
@@ -131,7 +132,7 @@ void bind_pipeline(py::module_& m) {
       py::arg("configs") = py::none(), py::arg("joints") = py::none(),
       py::arg("n_readings") = py::none(), py::arg("sensor_sq_dev") = py::none(),
       py::arg("config") = py::none(), py::arg("scale") = false, py::arg("robust") = false,
-      py::arg("sigma_rep") = py::none(), py::arg("interpolation") = "auto",
+      py::arg("sigma_rep") = py::none(), py::arg("interpolation") = "linear",
       py::arg("cube_edge") = py::none(), py::arg("strategy") = 0, py::arg("joint_norm") = "l2",
       py::arg("seed") = py::none(), py::arg("rigid_body") = true, kRegisterDoc);
 

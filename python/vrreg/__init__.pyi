@@ -229,7 +229,7 @@ def register(sensor: ArrayLike | Measurements, robot: Optional[ArrayLike] = None
              configs: Optional[ArrayLike] = None, joints: Optional[ArrayLike] = None,
              n_readings: Optional[ArrayLike] = None, sensor_sq_dev: Optional[ArrayLike] = None,
              config: Optional[int] = None, scale: bool = False, robust: bool = False,
-             sigma_rep: Optional[float] = None, interpolation: str = "auto",
+             sigma_rep: Optional[float] = None, interpolation: str = "linear",
              cube_edge: Optional[float] = None, strategy: int = 0, joint_norm: str = "l2",
              seed: Optional[int] = None, rigid_body: bool = True) -> RegisterResult:
     """Registers fiducials (Eq. 2), sigma_L (Eq. 1), noise (Eq. 9), corrections (Eq. 6). Metres."""

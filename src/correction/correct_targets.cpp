@@ -98,10 +98,10 @@ TargetCorrection correct_targets(const CorrectionField& field,
   std::optional<OctupletStencils> octuplet;
   std::optional<ScatteredStencils> scattered;
   InterpolationMethod method = settings.method;
-  if (method == InterpolationMethod::kAuto || method == InterpolationMethod::kGrid) {
+  if (method == InterpolationMethod::kLinear || method == InterpolationMethod::kGrid) {
     GridDetection detection = detect_grid(fiducials_robot_m, tolerance_m);
     VRREG_THROW_UNLESS(
-        detection.grid || method == InterpolationMethod::kAuto,
+        detection.grid || method == InterpolationMethod::kLinear,
         "grid interpolation needs fiducials on a complete regular grid: " << detection.reason);
     if (detection.grid) {
       grid = std::move(detection.grid);

@@ -17,21 +17,42 @@ void InterpolationSettings::validate() const {
 
 const char* to_string(InterpolationMethod method) {
   switch (method) {
-    case InterpolationMethod::kAuto: return "auto";
+    case InterpolationMethod::kLinear: return "linear";
     case InterpolationMethod::kOctuplet: return "octuplet";
     case InterpolationMethod::kGrid: return "grid";
     case InterpolationMethod::kScattered: return "scattered";
+    case InterpolationMethod::kTrilinear: return "trilinear";
+    case InterpolationMethod::kKriging: return "kriging";
+    case InterpolationMethod::kRbf: return "rbf";
+    case InterpolationMethod::kJoint: return "joint";
+    case InterpolationMethod::kAuto: return "auto";
   }
-  return "auto";
+  return "linear";
 }
 
-InterpolationMethod parse_interpolation_method(const std::string& name) {
-  if (name == "auto") return InterpolationMethod::kAuto;
-  if (name == "octuplet") return InterpolationMethod::kOctuplet;
-  if (name == "grid") return InterpolationMethod::kGrid;
-  if (name == "scattered") return InterpolationMethod::kScattered;
+InterpolationMethod parse_interpolation_method(const std::string& name, bool legacy_auto) {
+  if (name == "auto") return legacy_auto ? InterpolationMethod::kLinear : InterpolationMethod::kAuto;
+  for (const InterpolationMethod m :
+       {InterpolationMethod::kLinear, InterpolationMethod::kOctuplet, InterpolationMethod::kGrid,
+        InterpolationMethod::kScattered, InterpolationMethod::kTrilinear,
+        InterpolationMethod::kKriging, InterpolationMethod::kRbf, InterpolationMethod::kJoint}) {
+    if (name == to_string(m)) return m;
+  }
   VRREG_THROW_UNLESS(false, "unknown interpolation method '"
-                                << name << "' (expected auto, octuplet, grid or scattered)");
+                                << name
+                                << "' (expected linear, grid, scattered, octuplet, trilinear, "
+                                   "kriging, rbf, joint or auto)");
+}
+
+bool is_field_model(InterpolationMethod method) {
+  switch (method) {
+    case InterpolationMethod::kTrilinear:
+    case InterpolationMethod::kKriging:
+    case InterpolationMethod::kRbf:
+    case InterpolationMethod::kJoint:
+    case InterpolationMethod::kAuto: return true;
+    default: return false;
+  }
 }
 
 }  // namespace vrreg

@@ -44,24 +44,21 @@ std::vector<std::vector<Eigen::Index>> group_neighbours(const ConstPoints3Ref& p
   return out;
 }
 
-LooStencil loo_stencil(const ConstPoints3Ref& points_m, Eigen::Index j,
-                       const std::vector<Eigen::Index>& neighbours,
-                       const std::vector<bool>& usable) {
+LooStencil affine_stencil(const ConstPoints3Ref& points_m, const Eigen::Vector3d& at_m,
+                          std::vector<Eigen::Index> neighbours) {
   LooStencil out;
-  for (const Eigen::Index k : neighbours) {
-    if (usable[static_cast<std::size_t>(k)]) out.fiducial.push_back(k);
-  }
+  out.fiducial = std::move(neighbours);
   const auto n = static_cast<Eigen::Index>(out.fiducial.size());
   if (out.fiducial.size() < kMinNeighbours) return out;
-  // Design [1, (Y_k - Y_j) / h]: the intercept of the fit is the prediction at Y_j.
+  // Design [1, (Y_k - at) / h]: the intercept of the fit is the prediction at `at`.
   double h = 0.0;
-  for (const Eigen::Index k : out.fiducial) h = std::max(h, (points_m.col(k) - points_m.col(j)).norm());
+  for (const Eigen::Index k : out.fiducial) h = std::max(h, (points_m.col(k) - at_m).norm());
   if (!(h > 0.0)) return out;
   Eigen::MatrixXd a(n, 4);
   for (Eigen::Index i = 0; i < n; ++i) {
     a(i, 0) = 1.0;
-    a.block<1, 3>(i, 1) = ((points_m.col(out.fiducial[static_cast<std::size_t>(i)]) -
-                            points_m.col(j)) / h).transpose();
+    a.block<1, 3>(i, 1) =
+        ((points_m.col(out.fiducial[static_cast<std::size_t>(i)]) - at_m) / h).transpose();
   }
   // w = A (A'A)^+ e1 = U S^-1 V' e1, small singular values dropped.
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
@@ -75,6 +72,16 @@ LooStencil loo_stencil(const ConstPoints3Ref& points_m, Eigen::Index j,
   out.variance_factor = 1.0 + w.squaredNorm();
   out.ok = std::abs(w.sum() - 1.0) < 1e-6 && out.variance_factor <= kMaxVarianceFactor;
   return out;
+}
+
+LooStencil loo_stencil(const ConstPoints3Ref& points_m, Eigen::Index j,
+                       const std::vector<Eigen::Index>& neighbours,
+                       const std::vector<bool>& usable) {
+  std::vector<Eigen::Index> kept;
+  for (const Eigen::Index k : neighbours) {
+    if (usable[static_cast<std::size_t>(k)]) kept.push_back(k);
+  }
+  return affine_stencil(points_m, points_m.col(j), std::move(kept));
 }
 
 }  // namespace vrreg::detail

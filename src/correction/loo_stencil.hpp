@@ -20,6 +20,10 @@ struct LooStencil {
 std::vector<std::vector<Eigen::Index>> group_neighbours(const ConstPoints3Ref& points_m,
                                                         const std::vector<int>& groups, int k);
 
+/// Weights over `neighbours` of a least-squares affine fit evaluated at `at_m` [m].
+LooStencil affine_stencil(const ConstPoints3Ref& points_m, const Eigen::Vector3d& at_m,
+                          std::vector<Eigen::Index> neighbours);
+
 /// The LOO stencil of fiducial j from its neighbours that are `usable`.
 LooStencil loo_stencil(const ConstPoints3Ref& points_m, Eigen::Index j,
                        const std::vector<Eigen::Index>& neighbours,

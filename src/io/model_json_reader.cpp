@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "json_fields.hpp"
+#include "model_chain_json.hpp"
 #include "model_marker_offset_json.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
@@ -181,7 +182,7 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
   const json& interp = f.member(doc, "", "interpolation");
   const std::string method = f.string(interp, "interpolation", "method");
   try {
-    model.interpolation.method = parse_interpolation_method(method);
+    model.interpolation.method = parse_interpolation_method(method, /*legacy_auto=*/true);
   } catch (const InputError& e) {
     f.fail("interpolation.method", e.what());
   }
@@ -207,6 +208,7 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
   if (doc.contains("marker_offset")) {
     model.marker_offset = detail::read_marker_offset(doc.at("marker_offset"), "marker_offset", f);
   }
+  if (doc.contains("robot")) model.robot = detail::read_chain(doc.at("robot"), "robot", f);
   return model;
 }
 

@@ -5,6 +5,7 @@
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/model_json.hpp"
+#include "model_chain_json.hpp"
 #include "model_marker_offset_json.hpp"
 
 namespace vrreg::io {
@@ -114,6 +115,7 @@ std::string format_model_json(const RegistrationModel& model) {
     out["procedure2"] = procedure2_json(model);
   out["source"] = model.source;
   if (model.marker_offset) out["marker_offset"] = detail::marker_offset_json(*model.marker_offset);
+  if (model.robot) out["robot"] = detail::chain_json(*model.robot, true, "robot");
   out["interpolation"] = {
       {"method", to_string(model.interpolation.method)},
       {"cube_mm", finite(units::m_to_mm(model.interpolation.cube_edge_m), "cube_mm")},

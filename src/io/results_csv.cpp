@@ -1,6 +1,7 @@
 #include "vrreg/io/results_csv.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
@@ -30,6 +31,13 @@ constexpr const char* kPerTargetHeader =
     "corrected_robot_x_mm,corrected_robot_y_mm,corrected_robot_z_mm,"
     "correction_x_mm,correction_y_mm,correction_z_mm\n";
 
+// Field models add the predicted sd of each corrected target (docs/field-models.md).
+std::string per_target_header(const EvaluateResult& r) {
+  std::string header = kPerTargetHeader;
+  if (r.correction.predicted_sd_m.size() > 0) header.insert(header.size() - 1, ",predicted_sd_mm");
+  return header;
+}
+
 void put_per_target_row(std::string& out, const EvaluateResult& r, std::size_t k) {
   constexpr int kDigits = 10;
   const auto n = static_cast<Eigen::Index>(k);
@@ -46,6 +54,10 @@ void put_per_target_row(std::string& out, const EvaluateResult& r, std::size_t k
   put_mm(out, r.cor_tre_m[n] - r.unc_tre_m[n], kDigits);
   put_mm3(out, r.correction.corrected_robot_m, n, kDigits);
   put_mm3(out, r.correction.corrections_sensor_m, n, kDigits);
+  if (r.correction.predicted_sd_m.size() > 0) {
+    out += ',';
+    if (std::isfinite(r.correction.predicted_sd_m(n))) put_mm(out, r.correction.predicted_sd_m(n), kDigits);
+  }
   out += '\n';
 }
 
@@ -70,14 +82,14 @@ void write_rows_in_pieces(const std::string& path, const std::string& header, st
 }  // namespace
 
 std::string format_per_target_csv(const EvaluateResult& r) {
-  std::string out = kPerTargetHeader;
+  std::string out = per_target_header(r);
   for (std::size_t k = 0; k < r.names.size(); ++k) put_per_target_row(out, r, k);
   return out;
 }
 
 void write_per_target_csv(const std::string& path, const EvaluateResult& result) {
   write_rows_in_pieces(
-      path, kPerTargetHeader, result.names.size(),
+      path, per_target_header(result), result.names.size(),
       [&](std::string& piece, std::size_t k) { put_per_target_row(piece, result, k); });
 }
 
@@ -91,7 +103,8 @@ std::string corrected_header(const CorrectResult& r, const std::string& model_na
          ")\n"
          "point,config,status,robot_x_mm,robot_y_mm,robot_z_mm,"
          "uncorrected_robot_x_mm,uncorrected_robot_y_mm,uncorrected_robot_z_mm,"
-         "correction_x_mm,correction_y_mm,correction_z_mm\n";
+         "correction_x_mm,correction_y_mm,correction_z_mm" +
+         (c.predicted_sd_m.size() > 0 ? std::string(",predicted_sd_mm\n") : std::string("\n"));
 }
 
 void put_corrected_row(std::string& out, const CorrectResult& r, std::size_t k) {
@@ -106,6 +119,10 @@ void put_corrected_row(std::string& out, const CorrectResult& r, std::size_t k) 
   put_mm3(out, c.corrected_robot_m, n, kDigits);
   put_mm3(out, c.uncorrected_robot_m, n, kDigits);
   put_mm3(out, c.corrections_sensor_m, n, kDigits);
+  if (c.predicted_sd_m.size() > 0) {
+    out += ',';
+    if (std::isfinite(c.predicted_sd_m(n))) put_mm(out, c.predicted_sd_m(n), kDigits);
+  }
   out += '\n';
 }
 

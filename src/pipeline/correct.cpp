@@ -42,8 +42,10 @@ CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& 
     }
     nominal = set->robot_points(rows);
   }
-  out.correction =
-      pipeline_detail::correct_rows(model, *set, rows, out.interpolation, strategy, norm, nominal);
+  out.correction = pipeline_detail::correct_rows(model, *set, rows, out.interpolation, strategy,
+                                                 norm, nominal,
+                                                 options.robot ? options.robot : model.robot,
+                                                 &out.cross_validation);
   pipeline_detail::labels_of(*set, rows, out.names, out.configs);
   return out;
 }
@@ -57,7 +59,8 @@ CorrectResult correct(const RegistrationModel& model, const MeasurementSet& poin
 
 CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& points,
                       const CorrectOptions& options) {
-  const bool per_point = model.procedure2.strategy != Strategy::kAlongPath &&
+  const bool per_point = !is_field_model(options.interpolation.apply(model.interpolation).method) &&
+                         model.procedure2.strategy != Strategy::kAlongPath &&
                          model.procedure2.strategy != Strategy::kVolumeCorners &&
                          !options.config && !model.config && !model.marker_offset;
   if (!per_point) {  // labels and joints decide which points and which fiducials: the set's way

@@ -60,11 +60,15 @@ EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet
   out.targets_robot_m = set->robot_points(rows);
   out.interpolation = options.interpolation.apply(model.interpolation);
   out.correction = pipeline_detail::correct_rows(model, *set, rows, out.interpolation, out.strategy,
-                                                 norm, out.targets_robot_m);
+                                                 norm, out.targets_robot_m,
+                                                 options.robot ? options.robot : model.robot,
+                                                 &out.cross_validation);
   // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.
   out.unc_tre_m = point_errors(out.correction.uncorrected_robot_m, out.targets_robot_m);  // Eq. 3
   out.cor_tre_m = point_errors(out.correction.corrected_robot_m, out.targets_robot_m);
   out.summary = summarize_improvement(out.unc_tre_m, out.cor_tre_m);
+  out.calibration =
+      uncertainty_calibration(out.cor_tre_m, out.correction.predicted_sd_m);
   pipeline_detail::labels_of(*set, rows, out.names, out.configs);
   for (const int n : out.summary.bad_targets)
     out.bad_targets.push_back(out.names[static_cast<std::size_t>(n)]);

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "field_correction.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
@@ -76,7 +77,7 @@ TargetCorrection correct_volume_corners(const RegistrationModel& model, const Me
                                         kinematics::JointNorm norm) {
   require_configurations(set, planning::Strategy::kVolumeCorners);
   if (settings.method != InterpolationMethod::kOctuplet &&
-      settings.method != InterpolationMethod::kAuto) {
+      settings.method != InterpolationMethod::kLinear) {
     fail(set, std::string("--strategy 3 corrects with octuplets, not --interpolation ") +
                   to_string(settings.method));
   }
@@ -96,9 +97,29 @@ TargetCorrection correct_volume_corners(const RegistrationModel& model, const Me
 TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
                               const std::vector<std::size_t>& rows,
                               const InterpolationSettings& settings, planning::Strategy strategy,
-                              kinematics::JointNorm norm, const Points3& nominal_robot_m) {
+                              kinematics::JointNorm norm, const Points3& nominal_robot_m,
+                              const std::optional<kinematics::SerialChain>& robot,
+                              std::optional<CrossValidation>* cross_validation) {
   if (strategy == planning::Strategy::kVolumeCorners) {
     return correct_volume_corners(model, set, rows, settings, norm);
+  }
+  if (is_field_model(settings.method)) {
+    if (strategy == planning::Strategy::kAlongPath) {
+      fail(set, std::string("--strategy 2 corrects with the paper's stencils, not --interpolation ") +
+                    to_string(settings.method));
+    }
+    try {
+      const FieldData data = field_data(model, robot);
+      FittedField field = fit_field(settings.method, data);
+      if (cross_validation != nullptr) *cross_validation = field.cross_validation;
+      Eigen::MatrixXd joints;
+      if (field.method == InterpolationMethod::kJoint) joints = joints_of(set, rows);
+      return correct_with_field(field, data, set.sensor_points(rows), joints);
+    } catch (const FileError&) {
+      throw;
+    } catch (const InputError& e) {
+      fail(set, e.what());
+    }
   }
   return correct_targets(model.correction_field(), set.sensor_points(rows), nominal_robot_m,
                          settings, source_lines(set, rows));

@@ -3,10 +3,12 @@
 // errors that name its source: relabelling (Strategy 2) and Strategy 3's registration and
 // correction.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/pipeline/field_model.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/planning/strategy2_labels.hpp"
 #include "vrreg/registration/rigid.hpp"
@@ -37,9 +39,14 @@ TargetCorrection correct_volume_corners(const RegistrationModel& model, const Me
 /// nearest-configuration octuplets, else `settings` on the model's correction field with the rows'
 /// file lines as their visiting order. nominal_robot_m: the rows' nominal robot positions [m], or
 /// 0 columns where the interpolation does not need them.
+/// A field model (docs/field-models.md) instead when settings.method is one: fitted on the
+/// model's fiducials (`robot` for the joint-space model), its cross-validation table, when `auto`
+/// chose, into `cross_validation`.
 TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
                               const std::vector<std::size_t>& rows,
                               const InterpolationSettings& settings, planning::Strategy strategy,
-                              kinematics::JointNorm norm, const Points3& nominal_robot_m);
+                              kinematics::JointNorm norm, const Points3& nominal_robot_m,
+                              const std::optional<kinematics::SerialChain>& robot = std::nullopt,
+                              std::optional<CrossValidation>* cross_validation = nullptr);
 
 }  // namespace vrreg::pipeline_detail

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "cross_validation.hpp"
+#include "field_correction.hpp"
 #include "procedure2_steps.hpp"
 #include "robust_rows.hpp"
 #include "set_rows.hpp"
@@ -91,8 +93,21 @@ RegisterResult register_unchecked(const MeasurementSet& input, const RegisterOpt
   out.model.sigma_l_m = out.rigid_body.sigma_l_m;
   out.model.sigma_l_sampling = out.sigma_l_sampling;
   out.model.sigma_rep_m = options.sigma_rep_m;
+  out.model.robot = options.robot;
   out.noise = noise_figures(sigma_opt_m(out.model.fiducials), options.sigma_rep_m,
                             out.rigid_body.sigma_l_m);  // Eq. 9
+  if (options.interpolation.method == InterpolationMethod::kAuto) {
+    // The model stores what cross-validation chose, so evaluate and correct need not choose again.
+    try {
+      out.cross_validation = pipeline_detail::choose_by_cross_validation(
+          pipeline_detail::field_data(out.model, out.model.robot));
+    } catch (const FileError&) {
+      throw;
+    } catch (const InputError& e) {
+      fail(*set, e.what());
+    }
+    out.model.interpolation.method = out.cross_validation->chosen;
+  }
   return out;
 }
 
@@ -116,9 +131,12 @@ void RegisterOptions::validate() const {
   VRREG_THROW_UNLESS(s != Strategy::kVolumeCorners || !robust,
                      "--robust is not available with --strategy 3");
   VRREG_THROW_UNLESS(s != Strategy::kVolumeCorners ||
-                         interpolation.method == InterpolationMethod::kAuto ||
+                         interpolation.method == InterpolationMethod::kLinear ||
                          interpolation.method == InterpolationMethod::kOctuplet,
                      "--strategy 3 corrects with octuplets (--cube-mm), not --interpolation "
+                         << to_string(interpolation.method));
+  VRREG_THROW_UNLESS(s != Strategy::kAlongPath || !is_field_model(interpolation.method),
+                     "--strategy 2 corrects with the paper's stencils, not --interpolation "
                          << to_string(interpolation.method));
   VRREG_THROW_UNLESS(s == Strategy::kVolumeCorners || !procedure2.seed,
                      "--seed is for --strategy 3");

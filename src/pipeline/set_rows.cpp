@@ -48,4 +48,16 @@ std::vector<Location> locations_of(const MeasurementSet& set,
   return out;
 }
 
+Eigen::MatrixXd joints_of(const MeasurementSet& set, const std::vector<std::size_t>& rows) {
+  const auto n_joints = static_cast<Eigen::Index>(set.n_joints);
+  if (n_joints == 0) return {};
+  Eigen::MatrixXd out(n_joints, static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::vector<double>& q = set.locations[rows[i]].q_rad;
+    if (static_cast<Eigen::Index>(q.size()) != n_joints) return {};
+    out.col(static_cast<Eigen::Index>(i)) = Eigen::Map<const Eigen::VectorXd>(q.data(), n_joints);
+  }
+  return out;
+}
+
 }  // namespace vrreg::pipeline_detail

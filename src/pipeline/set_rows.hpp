@@ -25,6 +25,9 @@ std::vector<std::size_t> source_lines(const MeasurementSet& set,
 void labels_of(const MeasurementSet& set, const std::vector<std::size_t>& rows,
                std::vector<std::string>& names, std::vector<std::optional<int>>& configs);
 
+/// The joint angles of the selected rows, one column per row, or 0 x 0 when a row has none.
+Eigen::MatrixXd joints_of(const MeasurementSet& set, const std::vector<std::size_t>& rows);
+
 /// The selected locations, copied.
 std::vector<Location> locations_of(const MeasurementSet& set, const std::vector<std::size_t>& rows);
 

@@ -76,7 +76,7 @@ class CorrectTargets : public ::testing::Test {
 
 TEST_F(CorrectTargets, AutoPicksTheGridOnA1AndAllMethodsImprove) {
   const TargetCorrection grid =
-      correct_targets(model, targets_sensor, Points3(3, 0), with(InterpolationMethod::kAuto));
+      correct_targets(model, targets_sensor, Points3(3, 0), with(InterpolationMethod::kLinear));
   EXPECT_EQ(grid.method_used, InterpolationMethod::kGrid);
   EXPECT_EQ(grid.layout,
             "grid 6 x 7 x 5 nodes, 50 x 50 x 50 mm (every 2nd fiducial; 210 of 1167 fiducials)");
@@ -120,7 +120,7 @@ TEST_F(CorrectTargets, ExactAtFiducials) {
   // Targets whose registered positions are fiducials get exactly those fiducials' corrections,
   // and a fiducial's corrected position maps onto its robot position (Eq. 5, 6).
   const Points3 sensor = T.inverse().apply_all(a1.fiducials_robot_m);
-  for (const auto method : {InterpolationMethod::kScattered, InterpolationMethod::kAuto}) {
+  for (const auto method : {InterpolationMethod::kScattered, InterpolationMethod::kLinear}) {
     const TargetCorrection c = correct_targets(model, sensor, Points3(3, 0), with(method));
     ASSERT_EQ(c.n_flagged, 0);
     for (Eigen::Index j = 0; j < sensor.cols(); ++j) {
@@ -185,7 +185,7 @@ TEST_F(CorrectTargets, AutoFallsBackToScatteredAndGridRequestThrows) {
   const CorrectionField random_model = make_model(random_points(points_rng, 200, 0.1), T);
   const Points3 sensor = measure(random_points(points_rng, 20, 0.02), T);
   const TargetCorrection c =
-      correct_targets(random_model, sensor, Points3(3, 0), with(InterpolationMethod::kAuto));
+      correct_targets(random_model, sensor, Points3(3, 0), with(InterpolationMethod::kLinear));
   EXPECT_EQ(c.method_used, InterpolationMethod::kScattered);
   EXPECT_NE(c.layout.find("scattered"), std::string::npos);
   try {
@@ -214,13 +214,13 @@ TEST_F(CorrectTargets, RejectsUnusableInput) {
   CorrectionField short_model = model;
   short_model.corrections_sensor_m = model.corrections_sensor_m.leftCols(10);
   EXPECT_THROW(
-      (void)correct_targets(short_model, targets_sensor, none, with(InterpolationMethod::kAuto)),
+      (void)correct_targets(short_model, targets_sensor, none, with(InterpolationMethod::kLinear)),
       InputError);
   CorrectionField flat = make_model(grid_points(5, 5, 1, Eigen::Vector3d::Constant(0.02)), T);
-  EXPECT_THROW((void)correct_targets(flat, targets_sensor, none, with(InterpolationMethod::kAuto)),
+  EXPECT_THROW((void)correct_targets(flat, targets_sensor, none, with(InterpolationMethod::kLinear)),
                InputError);
   CorrectionField empty;
-  EXPECT_THROW((void)correct_targets(empty, targets_sensor, none, with(InterpolationMethod::kAuto)),
+  EXPECT_THROW((void)correct_targets(empty, targets_sensor, none, with(InterpolationMethod::kLinear)),
                InputError);
 }
 

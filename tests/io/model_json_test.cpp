@@ -10,6 +10,7 @@
 
 #include "io_test_helpers.hpp"
 #include "vrreg/core/random.hpp"
+#include "vrreg/kinematics/robots.hpp"
 #include "vrreg_test.hpp"
 
 namespace vrreg::io {
@@ -105,6 +106,31 @@ TEST(ModelJson, LayoutStartsWithFormatAndVersion) {
   EXPECT_TRUE(doc["fiducials"][1].contains("q_rad"));
   EXPECT_TRUE(doc["fiducials"][1]["config"].is_null());
   EXPECT_EQ(text.back(), '\n');
+}
+
+// Files written before the field models said "auto" for what is now "linear" (grid, else
+// scattered): they keep their meaning; `auto` (cross-validation) is never stored, its choice is.
+TEST(ModelJson, LegacyAutoReadsAsLinearAndFieldModelsRoundTrip) {
+  Random rng(23);
+  RegistrationModel m = random_model(rng, 4);
+  json doc = json::parse(format_model_json(m));
+  doc["interpolation"]["method"] = "auto";
+  EXPECT_EQ(parse_model_json(doc.dump(), "old.json").interpolation.method,
+            InterpolationMethod::kLinear);
+  for (const auto method : {InterpolationMethod::kTrilinear, InterpolationMethod::kKriging,
+                            InterpolationMethod::kRbf, InterpolationMethod::kJoint}) {
+    m.interpolation.method = method;
+    EXPECT_EQ(parse_model_json(format_model_json(m), "m.json").interpolation.method, method);
+  }
+  // The joint-space model's robot, tool (the marker) included, is kept exactly.
+  m.robot = kinematics::ur5().with_tool(Eigen::Isometry3d(Eigen::Translation3d(0.01, -0.02, 0.03)));
+  const RegistrationModel r = parse_model_json(format_model_json(m), "m.json");
+  ASSERT_TRUE(r.robot);
+  EXPECT_EQ(r.robot->name(), m.robot->name());
+  EXPECT_EQ(r.robot->T_flange_tcp().matrix(), m.robot->T_flange_tcp().matrix());
+  EXPECT_EQ(r.robot->T_base_dh0().matrix(), m.robot->T_base_dh0().matrix());
+  ASSERT_EQ(r.robot->n_joints(), 6);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(r.robot->row(i).d_m, m.robot->row(i).d_m);
 }
 
 TEST(ModelJson, WriteAndReadFile) {

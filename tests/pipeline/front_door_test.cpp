@@ -24,21 +24,11 @@ Eigen::Vector3d robot_error_m(const Eigen::Vector3d& p) {
                          2e-4 * std::sin(19.0 * p.x() + 7.0 * p.y()));
 }
 
-/// A grid of n^3 nominal positions [m] with `spacing_m`, starting at (0.3, -0.1, 0.1).
-Points3 grid_m(int n, double spacing_m, double offset_m = 0.0) {
-  Points3 out(3, n * n * n);
-  for (int i = 0; i < n * n * n; ++i) {
-    out.col(i) = Eigen::Vector3d(0.3, -0.1, 0.1) +
-                 (offset_m + spacing_m * Eigen::Array3d(i % n, i / n % n, i / (n * n))).matrix();
-  }
-  return out;
-}
-
 class FrontDoor : public ::testing::Test {
  protected:
   void SetUp() override {
-    fiducials.robot_m = grid_m(5, 0.05);
-    targets.robot_m = grid_m(4, 0.05, 0.025);  // the centres of the grid's cubes
+    fiducials.robot_m = testing::cube_grid_m(5, 0.05);
+    targets.robot_m = testing::cube_grid_m(4, 0.05, 0.025);  // the centres of the grid's cubes
     fiducials.sensor_m = measure(fiducials.robot_m);
     targets.sensor_m = measure(targets.robot_m);
   }

@@ -52,6 +52,17 @@ inline RigidTransform random_transform(Random& rng, double max_translation_m) {
   return t;
 }
 
+/// An n x n x n cube of nominal positions [m] at `spacing_m`, node (0,0,0) at (0.3, -0.1, 0.1)
+/// plus `offset_m` on every axis (x fastest).
+inline Points3 cube_grid_m(int n, double spacing_m, double offset_m = 0.0) {
+  Points3 out(3, n * n * n);
+  for (int i = 0; i < n * n * n; ++i) {
+    out.col(i) = Eigen::Vector3d(0.3, -0.1, 0.1) +
+                 (offset_m + spacing_m * Eigen::Array3d(i % n, i / n % n, i / (n * n))).matrix();
+  }
+  return out;
+}
+
 }  // namespace vrreg::testing
 
 #define EXPECT_EIGEN_NEAR(a, b, tol) EXPECT_PRED_FORMAT3(::vrreg::testing::eigen_near, a, b, tol)

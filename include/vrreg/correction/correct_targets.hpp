@@ -22,7 +22,7 @@ struct CorrectionField {
 
 /// Result of correct_targets; every per-target vector has one entry per target.
 struct TargetCorrection {
-  InterpolationMethod method_used = InterpolationMethod::kAuto;  ///< never kAuto after a call
+  InterpolationMethod method_used = InterpolationMethod::kLinear;  ///< never kAuto after a call
   std::string layout;  ///< what was used, e.g. "grid 6 x 7 x 5 nodes, 50 mm (every 2nd fiducial)"
   std::vector<Stencil> stencils;
   Points3 corrections_sensor_m;  ///< epsilon(T_X) per target (zero where status != kOk)
@@ -30,6 +30,9 @@ struct TargetCorrection {
   Points3 corrected_robot_m;     ///< R (T_X + epsilon) + tau; uncorrected mapping where flagged
   Points3 uncorrected_robot_m;   ///< R T_X + tau
   int n_flagged = 0;             ///< targets with status != kOk
+  /// Field models (docs/field-models.md): the predicted standard uncertainty of each corrected
+  /// target's 3D error [m] (NaN where flagged); empty for the paper's stencils.
+  Eigen::VectorXd predicted_sd_m;
 };
 
 /// Corrects targets measured in the sensor frame with the fiducial corrections of `field`.

@@ -7,6 +7,8 @@
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
+#include "vrreg/pipeline/field_model.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/pipeline/points.hpp"
@@ -17,6 +19,8 @@ namespace vrreg {
 struct CorrectOptions {
   std::optional<int> config;          ///< correct points with this label only (default: the model's)
   InterpolationChoice interpolation;  ///< over the model's stored interpolation
+  /// The arm (to the marker) for the joint-space field model; default: the model's.
+  std::optional<kinematics::SerialChain> robot;
 };
 
 /// The corrected points, in the order given.
@@ -25,6 +29,8 @@ struct CorrectResult {
   TargetCorrection correction;  ///< corrected_robot_m is what to command (uncorrected if flagged)
   std::vector<std::string> names;  ///< point labels; empty for arrays given without names
   std::vector<std::optional<int>> configs;  ///< configuration labels; empty when none were given
+  /// Field models: the cross-validation table when `auto` chose the method.
+  std::optional<CrossValidation> cross_validation;
 };
 
 /// Corrects the target rows of a measurement set (robot columns needed by octuplet and Strategy 3

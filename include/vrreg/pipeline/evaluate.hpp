@@ -11,6 +11,8 @@
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
 #include "vrreg/metrics/improvement.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
+#include "vrreg/pipeline/field_model.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/pipeline/points.hpp"
@@ -27,6 +29,8 @@ struct EvaluateOptions {
   std::optional<planning::Strategy> strategy;
   /// Strategy 3: the joint distance for nearest configurations; Strategy 2: must be the model's.
   std::optional<kinematics::JointNorm> joint_norm;
+  /// The arm (to the marker) for the joint-space field model; default: the model's.
+  std::optional<kinematics::SerialChain> robot;
 };
 
 /// The evaluated targets, in the order given.
@@ -44,6 +48,10 @@ struct EvaluateResult {
   /// The targets RRBC made worse: their names, or "#k" (k-th target, from 1) without names.
   std::vector<std::string> bad_targets;
   std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2: the targets' relabelling
+  /// Field models: the cross-validation table when `auto` chose the method.
+  std::optional<CrossValidation> cross_validation;
+  /// Field models: cor TRE against correction.predicted_sd_m (n = 0 for the paper's stencils).
+  UncertaintyCalibration calibration;
 };
 
 /// Evaluates `model` on the target rows of a measurement set (errors name `targets.source`).

@@ -35,6 +35,8 @@ struct RegistrationModel {
   /// Hand-eye registration (register_with_marker_offset): the estimated marker offset; the
   /// fiducials' robot positions and every target's come from forward kinematics with it.
   std::optional<MarkerOffsetModel> marker_offset;
+  /// The arm the fiducials' joints belong to, up to the marker (the joint-space field model).
+  std::optional<kinematics::SerialChain> robot;
 
   /// What RRBC interpolates (Eq. 6-8): the transform, fiducial positions, corrections, order.
   [[nodiscard]] CorrectionField correction_field() const;

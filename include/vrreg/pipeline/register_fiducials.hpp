@@ -13,6 +13,7 @@
 #include "vrreg/metrics/noise.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
 #include "vrreg/metrics/rigid_body_sampled.hpp"
+#include "vrreg/pipeline/field_model.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/pipeline/points.hpp"
 #include "vrreg/planning/procedure2.hpp"
@@ -37,6 +38,9 @@ struct RegisterOptions {
   /// Procedure 2: strategy 1 and 2 need `config`; 3 registers the volume corners (needs joints and
   /// configuration labels; octuplet interpolation with a cube edge) with procedure2.seed (1).
   planning::Procedure2 procedure2;
+  /// The arm the fiducials' joints belong to, up to the marker: stored in the model for the
+  /// joint-space field model (interpolation joint or auto).
+  std::optional<kinematics::SerialChain> robot;
   /// Throws InputError on combinations that cannot work (see the members).
   void validate() const;
 };
@@ -69,6 +73,8 @@ struct RegisterResult {
   std::vector<std::string> rejected;  ///< robust: names of the rejected fiducials
   std::optional<RobustReport> robust;  ///< robust: the outliers, their deviations, the scale
   std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2: what was relabelled
+  /// interpolation auto: the cross-validation table; the model stores the method it chose.
+  std::optional<CrossValidation> cross_validation;
 };
 
 /// Builds a model from the fiducial rows of a measurement set (Role::kFiducial; errors name

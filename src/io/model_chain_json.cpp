@@ -1,0 +1,95 @@
+#include "model_chain_json.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "vrreg/core/check.hpp"
+
+namespace vrreg::io::detail {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+ojson finite_row(const std::vector<double>& values, const char* what, const char* key) {
+  ojson out = ojson::array();
+  for (const double v : values) {
+    VRREG_THROW_UNLESS(std::isfinite(v), "model: " << what << " " << key << " is not finite");
+    out.push_back(v);
+  }
+  return out;
+}
+
+ojson matrix_json(const Eigen::Matrix4d& m, const char* what, const char* key) {
+  ojson out = ojson::array();
+  for (int r = 0; r < 4; ++r) out.push_back(finite_row({m(r, 0), m(r, 1), m(r, 2), m(r, 3)}, what, key));
+  return out;
+}
+
+Eigen::Isometry3d read_matrix(const nlohmann::json& robot, const std::string& robot_path,
+                              const char* key, const JsonFields& f) {
+  const nlohmann::json& rows = f.member(robot, robot_path, key);
+  if (!rows.is_array() || rows.size() != 4) f.fail(join_path(robot_path, key), "expected 4 rows of 4 numbers");
+  Eigen::Matrix4d m;
+  for (int r = 0; r < 4; ++r) {
+    const std::vector<double> row = f.array_of_numbers(
+        rows[static_cast<std::size_t>(r)], join_path(robot_path, key) + "[" + std::to_string(r) + "]", 4);
+    for (int c = 0; c < 4; ++c) m(r, c) = row[static_cast<std::size_t>(c)];
+  }
+  return Eigen::Isometry3d(m);
+}
+
+}  // namespace
+
+ojson chain_json(const kinematics::SerialChain& chain, bool with_tool, const char* what) {
+  ojson robot = ojson::object();
+  robot["name"] = chain.name();
+  ojson dh = ojson::array();
+  for (const kinematics::DhRow& row : chain.rows()) {
+    dh.push_back(finite_row({row.a_m, row.alpha_rad, row.d_m, row.theta_offset_rad}, what, "dh"));
+  }
+  robot["dh_a_m_alpha_rad_d_m_theta_offset_rad"] = std::move(dh);
+  ojson limits = ojson::array();
+  for (const kinematics::JointLimits& l : chain.limits()) {
+    limits.push_back(finite_row({l.lower_rad, l.upper_rad}, what, "joint_limits_rad"));
+  }
+  robot["joint_limits_rad"] = std::move(limits);
+  robot["T_base_dh0_m"] = matrix_json(chain.T_base_dh0().matrix(), what, "T_base_dh0");
+  if (with_tool) robot["T_flange_tcp_m"] = matrix_json(chain.T_flange_tcp().matrix(), what, "T_flange_tcp");
+  return robot;
+}
+
+kinematics::SerialChain read_chain(const nlohmann::json& robot, const std::string& robot_path,
+                                   const JsonFields& f) {
+  f.require_object(robot, robot_path);
+  const std::string name = f.string(robot, robot_path, "name");
+  const std::string dh_key = "dh_a_m_alpha_rad_d_m_theta_offset_rad";
+  const nlohmann::json& dh = f.member(robot, robot_path, dh_key);
+  const nlohmann::json& limits = f.member(robot, robot_path, "joint_limits_rad");
+  if (!dh.is_array() || dh.empty() || dh.size() > kinematics::kMaxJoints) {
+    f.fail(join_path(robot_path, dh_key), "expected 1 to 12 rows of 4 numbers");
+  }
+  if (!limits.is_array() || limits.size() != dh.size()) {
+    f.fail(join_path(robot_path, "joint_limits_rad"), "expected one [lower, upper] per DH row");
+  }
+  std::vector<kinematics::DhRow> rows;
+  std::vector<kinematics::JointLimits> joint_limits;
+  for (std::size_t i = 0; i < dh.size(); ++i) {
+    const std::string at = "[" + std::to_string(i) + "]";
+    const std::vector<double> r = f.array_of_numbers(dh[i], join_path(robot_path, dh_key) + at, 4);
+    rows.push_back({r[0], r[1], r[2], r[3]});
+    const std::vector<double> l =
+        f.array_of_numbers(limits[i], join_path(robot_path, "joint_limits_rad") + at, 2);
+    joint_limits.push_back({l[0], l[1]});
+  }
+  const Eigen::Isometry3d T_base_dh0 = read_matrix(robot, robot_path, "T_base_dh0_m", f);
+  const Eigen::Isometry3d T_flange_tcp = robot.contains("T_flange_tcp_m")
+                                             ? read_matrix(robot, robot_path, "T_flange_tcp_m", f)
+                                             : Eigen::Isometry3d::Identity();
+  try {
+    return kinematics::SerialChain(name, rows, joint_limits, T_base_dh0, T_flange_tcp);
+  } catch (const InputError& e) {
+    f.fail(robot_path, e.what());
+  }
+}
+
+}  // namespace vrreg::io::detail

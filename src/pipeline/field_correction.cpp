@@ -1,0 +1,118 @@
+#include "field_correction.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "cross_validation.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/metrics/noise.hpp"
+
+namespace vrreg::pipeline_detail {
+
+FieldData field_data(const RegistrationModel& model,
+                     const std::optional<kinematics::SerialChain>& robot) {
+  FieldData data;
+  const CorrectionField field = model.correction_field();
+  data.T_robot_sensor = model.T_robot_sensor;
+  data.fiducials_robot_m = field.fiducials_robot_m;
+  data.corrections_sensor_m = field.corrections_sensor_m;
+  data.tolerance_m = model.interpolation.match_tolerance_m;
+  const auto n = static_cast<Eigen::Index>(model.fiducials.size());
+  data.registered_robot_m.resize(3, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    data.registered_robot_m.col(j) =
+        model.T_robot_sensor.apply(model.fiducials[static_cast<std::size_t>(j)].sensor_m);
+  }
+  const std::size_t n_joints = model.fiducials.front().q_rad.size();
+  bool joints = n_joints > 0;
+  for (const Location& f : model.fiducials) joints = joints && f.q_rad.size() == n_joints;
+  if (joints) {
+    data.joints_rad.resize(static_cast<Eigen::Index>(n_joints), n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const std::vector<double>& q = model.fiducials[static_cast<std::size_t>(j)].q_rad;
+      data.joints_rad.col(j) = Eigen::Map<const Eigen::VectorXd>(q.data(), q.size());
+    }
+  }
+  data.robot = robot;
+  const std::optional<double> opt = sigma_opt_m(model.fiducials);
+  if (opt || model.sigma_rep_m) {
+    data.noise_sd_m = sigma_noise_m(opt.value_or(0.0), model.sigma_rep_m.value_or(0.0));
+  }
+  return data;
+}
+
+FittedField fit_field(InterpolationMethod method, const FieldData& data) {
+  FittedField out;
+  const int folds = 5;
+  const std::uint64_t seed = 1;
+  if (method == InterpolationMethod::kAuto) {
+    out.cross_validation = choose_by_cross_validation(data, folds, seed);
+    out.method = out.cross_validation->chosen;
+    for (const CrossValidationRow& row : out.cross_validation->rows) {
+      if (row.method == out.method) out.cv_rms_m = row.rms_m;
+    }
+  } else {
+    VRREG_THROW_UNLESS(is_field_model(method), to_string(method) << " is not a field model");
+    out.method = method;
+  }
+  out.model = fit_field_model(out.method, data);
+  if (!out.cross_validation && method != InterpolationMethod::kKriging) {
+    // The model's own uncertainty is its cross-validated error (kriging has a posterior).
+    const CrossValidationRow row =
+        cross_validate(out.method, data, assign_folds(data.size(), folds, seed), folds);
+    VRREG_THROW_UNLESS(row.applicable, to_string(out.method)
+                                           << " interpolation cannot be cross-validated on these "
+                                              "fiducials: "
+                                           << row.note);
+    out.cv_rms_m = row.rms_m;
+  }
+  return out;
+}
+
+TargetCorrection correct_with_field(const FittedField& field, const FieldData& data,
+                                    const ConstPoints3Ref& targets_sensor_m,
+                                    const Eigen::MatrixXd& targets_joints_rad) {
+  VRREG_THROW_UNLESS(targets_sensor_m.allFinite(),
+                     "the targets' sensor coordinates are not all finite");
+  const Eigen::Index n = targets_sensor_m.cols();
+  const SimilarityTransform& T = data.T_robot_sensor;
+  TargetCorrection out;
+  out.method_used = field.method;
+  out.layout = field.model->describe();
+  out.uncorrected_robot_m.resize(3, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    out.uncorrected_robot_m.col(i) = T.apply(Eigen::Vector3d(targets_sensor_m.col(i)));
+  if (field.method == InterpolationMethod::kJoint) {
+    VRREG_THROW_UNLESS(targets_joints_rad.cols() == n && data.robot &&
+                           targets_joints_rad.rows() == data.robot->n_joints(),
+                       "joint interpolation needs every target's joint angles");
+  }
+  const FieldPredictions p = field.model->predict(FieldQuery{out.uncorrected_robot_m,
+                                                             targets_joints_rad});
+  out.stencils.resize(static_cast<std::size_t>(n));
+  out.corrections_sensor_m = p.corrections_sensor_m;
+  out.corrected_sensor_m.resize(3, n);
+  out.corrected_robot_m.resize(3, n);
+  out.predicted_sd_m.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (p.ok[k] == 0) {
+      out.stencils[k].status = StencilStatus::kOutsideGrid;
+      out.corrections_sensor_m.col(i).setZero();
+      out.corrected_sensor_m.col(i) = targets_sensor_m.col(i);
+      out.corrected_robot_m.col(i) = out.uncorrected_robot_m.col(i);
+      out.predicted_sd_m(i) = std::numeric_limits<double>::quiet_NaN();
+      ++out.n_flagged;
+      continue;
+    }
+    const Eigen::Vector3d corrected = targets_sensor_m.col(i) + p.corrections_sensor_m.col(i);
+    out.corrected_sensor_m.col(i) = corrected;  // Eq. 8
+    out.corrected_robot_m.col(i) = T.apply(corrected);
+    // The error of a corrected target is the field's error plus the target's own noise; the
+    // cross-validated RMS holds both (a held-out fiducial is noisy too), kriging gives them apart.
+    out.predicted_sd_m(i) = p.sd_m.size() == n ? p.sd_m(i) : field.cv_rms_m;
+  }
+  return out;
+}
+
+}  // namespace vrreg::pipeline_detail

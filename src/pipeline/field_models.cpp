@@ -1,0 +1,55 @@
+// Dispatch over the field models and what each needs (docs/field-models.md).
+#include "field_models.hpp"
+
+#include "vrreg/core/check.hpp"
+
+namespace vrreg::pipeline_detail {
+
+FieldData FieldData::subset(const std::vector<Eigen::Index>& keep) const {
+  FieldData out;
+  out.T_robot_sensor = T_robot_sensor;
+  out.robot = robot;
+  out.noise_sd_m = noise_sd_m;
+  out.tolerance_m = tolerance_m;
+  const auto n = static_cast<Eigen::Index>(keep.size());
+  out.fiducials_robot_m.resize(3, n);
+  out.registered_robot_m.resize(3, n);
+  out.corrections_sensor_m.resize(3, n);
+  if (joints_rad.size() > 0) out.joints_rad.resize(joints_rad.rows(), n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Index j = keep[static_cast<std::size_t>(i)];
+    out.fiducials_robot_m.col(i) = fiducials_robot_m.col(j);
+    out.registered_robot_m.col(i) = registered_robot_m.col(j);
+    out.corrections_sensor_m.col(i) = corrections_sensor_m.col(j);
+    if (joints_rad.size() > 0) out.joints_rad.col(i) = joints_rad.col(j);
+  }
+  return out;
+}
+
+std::string field_model_unavailable(InterpolationMethod method, const FieldData& data) {
+  if (method == InterpolationMethod::kJoint) {
+    if (data.joints_rad.size() == 0) return "the fiducials have no joint angles";
+    if (!data.robot) return "no robot given (--robot)";
+    if (data.joints_rad.rows() != data.robot->n_joints())
+      return "the fiducials have " + std::to_string(data.joints_rad.rows()) +
+             " joint angles, the robot " + std::to_string(data.robot->n_joints());
+  }
+  if (data.size() < 12) return "fewer than 12 fiducials";
+  return {};
+}
+
+std::unique_ptr<FieldModel> fit_field_model(InterpolationMethod method, const FieldData& data) {
+  const std::string why = field_model_unavailable(method, data);
+  VRREG_THROW_UNLESS(why.empty(), to_string(method) << " interpolation cannot be used: " << why);
+  switch (method) {
+    case InterpolationMethod::kScattered: return fit_scattered_model(data);
+    case InterpolationMethod::kTrilinear: return fit_trilinear_model(data);
+    case InterpolationMethod::kKriging: return fit_kriging_model(data);
+    case InterpolationMethod::kRbf: return fit_rbf_model(data);
+    case InterpolationMethod::kJoint: return fit_joint_model(data);
+    default: break;
+  }
+  VRREG_THROW_UNLESS(false, to_string(method) << " is not a field model");
+}
+
+}  // namespace vrreg::pipeline_detail
