@@ -75,7 +75,8 @@ template <typename Result>
 void bind_correction_members(py::class_<Result>& c) {
   c.def_property_readonly(
        "method", [](const Result& r) { return std::string(to_string(r.correction.method_used)); },
-       "interpolation used: 'grid', 'scattered' or 'octuplet' (Eq. 7)")
+       "interpolation used: 'grid', 'scattered', 'octuplet' (Eq. 7) or a field model "
+       "('trilinear', 'kriging', 'rbf', 'joint')")
       .def_property_readonly(
           "layout", [](const Result& r) { return r.correction.layout; },
           "what the interpolation used, in words")
@@ -92,7 +93,40 @@ void bind_correction_members(py::class_<Result>& c) {
           "(N,) uint8 StencilStatus per point (0 = OK)")
       .def_property_readonly(
           "status_names", [](const Result& r) { return status_names(r.correction); },
-          "status per point as text ('ok', 'outside grid', ...)");
+          "status per point as text ('ok', 'outside grid', ...)")
+      .def_property_readonly(
+          "predicted_sd",
+          [](const Result& r) -> py::object {
+            if (r.correction.predicted_sd_m.size() == 0) return py::none();
+            return py::array_t<double>(r.correction.predicted_sd_m.size(),
+                                       r.correction.predicted_sd_m.data());
+          },
+          "field models: (N,) predicted standard uncertainty of each corrected point's 3D error "
+          "[m] (NaN where not corrected); None for the paper's stencils")
+      .def_property_readonly(
+          "cross_validation",
+          [](const Result& r) -> py::object {
+            if (!r.cross_validation) return py::none();
+            py::list rows;
+            for (const CrossValidationRow& row : r.cross_validation->rows) {
+              py::dict d;
+              d["method"] = std::string(to_string(row.method));
+              d["applicable"] = row.applicable;
+              d["note"] = row.note;
+              d["rms_common"] = row.rms_common_m;
+              d["rms"] = row.rms_m;
+              d["n_predicted"] = row.n_predicted;
+              d["seconds"] = row.seconds;
+              rows.append(d);
+            }
+            py::dict out;
+            out["folds"] = r.cross_validation->folds;
+            out["seed"] = r.cross_validation->seed;
+            out["chosen"] = std::string(to_string(r.cross_validation->chosen));
+            out["rows"] = rows;
+            return out;
+          },
+          "interpolation 'auto': the K-fold cross-validation table [m] and its choice (dict)");
   points_property(
       c, "corrected",
       [](const Result& r) -> const Points3& { return r.correction.corrected_robot_m; },
@@ -215,6 +249,18 @@ void bind_results(py::module_& m) {
                              [](const EvaluateResult& r) { return optional_value(r.config); })
       .def_property_readonly("relabelled",
                              [](const EvaluateResult& r) { return strategy2_dict(r.relabelled); })
+      .def_property_readonly(
+          "calibration",
+          [](const EvaluateResult& r) -> py::object {
+            if (r.calibration.n == 0) return py::none();
+            py::dict d;
+            d["n"] = r.calibration.n;
+            d["rms_tre_over_sd"] = r.calibration.rms_ratio;
+            d["within_2sd"] = r.calibration.within_2sigma;
+            return d;
+          },
+          "field models: RMS of TRE / predicted sd (1 = calibrated) and the fraction within "
+          "2 sd (dict), else None")
       .def("__repr__", &evaluate_repr);
   ev.def_property_readonly(
         "unc_tre",

@@ -1,7 +1,10 @@
 // The cell report's page: summary table, L histogram (as Fig. 4), TRE per target (as Fig. 12-13),
 // RMS_T per configuration (as Fig. 14-15), Delta TRE histogram (as Fig. 11), 3D volume (Fig. 10).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
+#include <vector>
 
 #include "charts.hpp"
 #include "vrreg/core/format.hpp"
@@ -52,6 +55,18 @@ ReportTable summary_table(const CellReportInput& in, const CellAnalysis& a) {
       {"N_bad (TRE got worse)", std::to_string(s.n_bad) + " of " + std::to_string(s.n_targets)},
       {"not correctable (left uncorrected)", std::to_string(in.evaluation.correction.n_flagged)},
   };
+  const EvaluateResult& e = in.evaluation;
+  if (e.calibration.n > 0) {  // a field model: its predicted uncertainty, and how honest it was
+    std::vector<double> sd;
+    for (Eigen::Index i = 0; i < e.correction.predicted_sd_m.size(); ++i) {
+      if (std::isfinite(e.correction.predicted_sd_m(i))) sd.push_back(e.correction.predicted_sd_m(i));
+    }
+    std::sort(sd.begin(), sd.end());
+    t.rows.push_back({"predicted σ of a corrected target (median)", mm(sd[sd.size() / 2])});
+    t.rows.push_back({"calibration: RMS of TRE / σ_pred (1 = honest)",
+                      num(e.calibration.rms_ratio, 2) + ", " +
+                          num(100.0 * e.calibration.within_2sigma, 0) + " % within 2σ"});
+  }
   if (!a.method.empty()) t.rows.insert(t.rows.begin() + 8, {"Procedure 2", a.method});
   t.caption =
       "ρ > 2.5 means the rigid-body deviation is systematic and RRBC should help; γ is the "
@@ -81,7 +96,7 @@ std::vector<double> to_mm(const Eigen::VectorXd& v) {
   return out;
 }
 
-ReportFigure tre_figure(const CellAnalysis& a) {
+ReportFigure tre_figure(const CellReportInput& in, const CellAnalysis& a) {
   ReportFigure f;
   f.title = "TRE per target, uncorrected and corrected (as paper Fig. 12-13)";
   f.wide = true;
@@ -89,6 +104,14 @@ ReportFigure tre_figure(const CellAnalysis& a) {
                                             charts::kUncorrected));
   f.data.push_back(charts::per_target_trace(to_mm(a.cor_tre_m), a.labels,
                                             "corrected TRE(T̂_X) (RRBC)", charts::kCorrected));
+  const Eigen::VectorXd& sd_m = in.evaluation.correction.predicted_sd_m;
+  if (sd_m.size() == a.cor_tre_m.size()) {  // field models: what each target was predicted to be
+    f.data.push_back(
+        charts::per_target_trace(to_mm(sd_m), a.labels, "predicted σ (1σ)", charts::kUncorrected));
+    f.data.back()["type"] = "scatter";
+    f.data.back()["mode"] = "lines";
+    f.data.back()["line"] = {{"dash", "dot"}, {"color", charts::kCorrected}};
+  }
   nlohmann::json bx = nlohmann::json::array(), by = nlohmann::json::array(),
                  bt = nlohmann::json::array();
   for (int k : a.summary.bad_targets) {
@@ -230,7 +253,7 @@ ReportPage cell_report_page(const CellReportInput& in, const CellAnalysis& a) {
                       {},
                       {}};
   if (a.rigid_body.pairs > 0) rigid.figures.push_back(l_histogram_figure(a));
-  ReportSection errors{"Target registration error", {}, {}, {tre_figure(a)}};
+  ReportSection errors{"Target registration error", {}, {}, {tre_figure(in, a)}};
   std::map<int, int> configs;
   for (const auto& c : a.configs)
     if (c) ++configs[*c];
