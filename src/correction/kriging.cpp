@@ -59,6 +59,10 @@ struct KrigingModel::Impl {
   detail::TrendFrame frame;
   std::array<std::optional<detail::KrigingPosterior>, 3> exact_posterior;
   std::optional<detail::PointIndex> index;  ///< local prediction above exact_limit
+  /// Above exact_limit: the trend fitted once to all fiducials (least squares, terms x 3) and
+  /// the values minus that trend, which the local models krige with a constant mean.
+  Eigen::MatrixXd global_beta;
+  Points3 residuals_m;
 
   [[nodiscard]] bool exact() const { return positions_m.cols() <= options.exact_limit; }
 
@@ -71,10 +75,15 @@ struct KrigingModel::Impl {
       }
     } else {
       index.emplace(positions_m);
+      const Eigen::MatrixXd basis = detail::trend_basis(positions_m, options.trend_degree, frame);
+      global_beta = basis.colPivHouseholderQr().solve(values_m.transpose());
+      residuals_m = values_m - (basis * global_beta).transpose();
     }
   }
 
-  /// Local universal kriging: the `local_neighbours` nearest fiducials, global hyperparameters.
+  /// Local kriging: the global trend plus ordinary kriging (constant mean) of the residuals
+  /// of the `local_neighbours` nearest fiducials, global hyperparameters. Re-estimating a
+  /// 10-term trend from a small neighbourhood would throw away most of its information.
   void predict_local(const Eigen::Vector3d& query_m, Eigen::Ref<Eigen::Vector3d> mean,
                      Eigen::Ref<Eigen::Vector3d> sd) const {
     const std::vector<Eigen::Index> near = index->nearest_k(
@@ -83,18 +92,19 @@ struct KrigingModel::Impl {
     Points3 local_values(3, local.cols());
     for (Eigen::Index k = 0; k < local.cols(); ++k) {
       local.col(k) = positions_m.col(near[static_cast<std::size_t>(k)]);
-      local_values.col(k) = values_m.col(near[static_cast<std::size_t>(k)]);
+      local_values.col(k) = residuals_m.col(near[static_cast<std::size_t>(k)]);
     }
     const detail::TrendFrame local_frame = detail::trend_frame(local);
+    const Eigen::RowVectorXd trend =
+        detail::trend_basis(query_m, options.trend_degree, frame) * global_beta;
     for (int axis = 0; axis < 3; ++axis) {
       const detail::KrigingPosterior post = detail::condition_kriging(
           local, local_values.row(axis).transpose(),
-          axes[static_cast<std::size_t>(axis)].hyperparameters, options.kernel,
-          options.trend_degree, local_frame);
+          axes[static_cast<std::size_t>(axis)].hyperparameters, options.kernel, 0, local_frame);
       Eigen::RowVectorXd m(1);
       Eigen::RowVectorXd s(1);
       detail::predict_kriging(post, query_m, m, s);
-      mean(axis) = m(0);
+      mean(axis) = trend(axis) + m(0);
       sd(axis) = s(0);
     }
   }

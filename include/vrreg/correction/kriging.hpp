@@ -44,7 +44,7 @@ struct KrigingOptions {
   Eigen::Index local_neighbours = 150;
   /// The hyperparameters are fitted on at most this many fiducials: all of them if there are
   /// fewer, else a deterministic spatially spread subset (seeded below).
-  Eigen::Index fit_subset = 600;
+  Eigen::Index fit_subset = 500;
   std::uint64_t subset_seed = 1;
   /// Starts of the optimiser (deterministic: length scales at fractions of the extent).
   int restarts = 2;
