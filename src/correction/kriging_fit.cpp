@@ -1,0 +1,102 @@
+#include "kriging_fit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "bfgs_box.hpp"
+#include "kriging_reml.hpp"
+
+namespace vrreg::detail {
+namespace kriging_fit {
+
+std::uint64_t splitmix64(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+  z = (z ^ (z >> 30U)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27U)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31U);
+}
+
+/// Length-scale starts as fractions of the fiducials' extent, in the order they are tried.
+constexpr std::array<double, 5> kLengthStarts = {0.3, 1.0, 0.1, 3.0, 0.5};
+
+}  // namespace kriging_fit
+
+std::vector<Eigen::Index> seeded_subset(Eigen::Index n, Eigen::Index size, std::uint64_t seed) {
+  std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), Eigen::Index{0});
+  if (size >= n) {
+    return order;
+  }
+  std::uint64_t state = seed;
+  for (Eigen::Index i = 0; i < size; ++i) {
+    const auto span = static_cast<std::uint64_t>(n - i);
+    const auto pick = i + static_cast<Eigen::Index>(kriging_fit::splitmix64(state) % span);
+    std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(pick)]);
+  }
+  order.resize(static_cast<std::size_t>(size));
+  std::sort(order.begin(), order.end());
+  return order;
+}
+
+KrigingAxisFit fit_kriging_axis(const ConstPoints3Ref& positions_m, const Eigen::VectorXd& values,
+                                const KrigingOptions& options, const TrendFrame& frame) {
+  // Work in units of the values' sd so that the bounds and tolerances are scale-free.
+  const double centred_sd =
+      std::sqrt((values.array() - values.mean()).square().mean());
+  const double scale = centred_sd > 0.0 ? centred_sd : 1.0;
+  const double floor_sd = options.noise_sd_m.value_or(0.0) / scale;
+  const Eigen::MatrixXd trend = trend_basis(positions_m, options.trend_degree, frame);
+  const RemlData data = make_reml_data(positions_m, values / scale, trend, options.kernel,
+                                       floor_sd * floor_sd);
+  const auto n = static_cast<double>(values.size());
+  const BoxObjective objective = [&](const Eigen::VectorXd& x, Eigen::VectorXd* gradient) {
+    RemlParameters g;
+    const double value = restricted_log_likelihood(data, x, gradient != nullptr ? &g : nullptr);
+    if (gradient != nullptr) {
+      *gradient = -g / n;
+    }
+    return std::isfinite(value) ? -value / n : std::numeric_limits<double>::infinity();
+  };
+  const double extent_m = frame.scale_m;
+  Eigen::VectorXd lower(5);
+  Eigen::VectorXd upper(5);
+  const double log_extent = std::log(extent_m);
+  // Lengths from 1/100 to 20 extents; signal sd 1e-3..1e2 value sds; nugget excess down to
+  // 1e-4 value sd (keeps K well conditioned, e.g. for coincident fiducials).
+  lower << Eigen::Vector3d::Constant(log_extent + std::log(0.01)), std::log(1e-3), std::log(1e-4);
+  upper << Eigen::Vector3d::Constant(log_extent + std::log(20.0)), std::log(1e2), std::log(10.0);
+
+  KrigingAxisFit fit;
+  fit.n_fit = values.size();
+  BoxMinimum best;
+  best.value = std::numeric_limits<double>::infinity();
+  const int starts = std::clamp(options.restarts, 1, static_cast<int>(kriging_fit::kLengthStarts.size()));
+  for (int start = 0; start < starts; ++start) {
+    Eigen::VectorXd x0(5);
+    x0 << Eigen::Vector3d::Constant(
+              log_extent + std::log(kriging_fit::kLengthStarts[static_cast<std::size_t>(start)])),
+        0.0, std::log(0.3);
+    const BoxMinimum result =
+        minimise_bfgs_box(objective, x0, lower, upper, options.max_iterations, 1e-6);
+    fit.evaluations += result.evaluations;
+    if (result.value < best.value) {
+      best = result;
+    }
+  }
+  if (!std::isfinite(best.value)) {
+    fit.restricted_log_likelihood = -std::numeric_limits<double>::infinity();
+    return fit;  // caller reports: no start had a positive-definite covariance
+  }
+  KrigingHyperparameters hyper = hyperparameters_from(best.x, floor_sd * floor_sd);
+  hyper.signal_sd_m *= scale;
+  hyper.nugget_sd_m *= scale;
+  fit.hyperparameters = hyper;
+  fit.restricted_log_likelihood =
+      -best.value * n - static_cast<double>(values.size() - trend.cols()) * std::log(scale);
+  return fit;
+}
+
+}  // namespace vrreg::detail
