@@ -78,10 +78,7 @@ class DegreeScorer {
 FoldGrams fold_grams(const JointErrorModel::State& full, const std::vector<JointVector>& q_rad,
                      const ConstPoints3Ref& error_robot_m, const JointErrorModelOptions& options) {
   const Eigen::MatrixXd a = design_matrix(full, Eigen::VectorXd::Zero(full.layout.n_columns()), q_rad);
-  Eigen::VectorXd norms = a.colwise().norm().transpose();
-  for (Eigen::Index c = 0; c < norms.size(); ++c) {
-    if (!(norms(c) > 0.0)) norms(c) = 1.0;
-  }
+  const Eigen::VectorXd inverse_norms = inverse_column_norms(a);
   const int n = static_cast<int>(q_rad.size());
   const std::vector<int> fold = cv_fold_of(n, options.cv_folds, options.cv_seed);
   FoldGrams g;
@@ -96,7 +93,7 @@ FoldGrams fold_grams(const JointErrorModel::State& full, const std::vector<Joint
       if (fold[static_cast<std::size_t>(j)] != f) continue;
       for (int k = 0; k < 3; ++k) rows.push_back(3 * j + k);
     }
-    const Eigen::MatrixXd af = a(rows, Eigen::all) * norms.cwiseInverse().asDiagonal();
+    const Eigen::MatrixXd af = a(rows, Eigen::all) * inverse_norms.asDiagonal();
     Eigen::VectorXd ef(static_cast<Eigen::Index>(rows.size()));
     for (std::size_t r = 0; r < rows.size(); ++r) {
       ef(static_cast<Eigen::Index>(r)) = error_robot_m(rows[r] % 3, rows[r] / 3);

@@ -150,6 +150,16 @@ Eigen::MatrixXd design_matrix(const JointErrorModel::State& s, const Eigen::Vect
   return a;
 }
 
+Eigen::VectorXd inverse_column_norms(const Eigen::MatrixXd& a) {
+  const Eigen::VectorXd norms = a.colwise().norm().transpose();
+  const double negligible = 1e-10 * norms.maxCoeff();
+  Eigen::VectorXd inverse = Eigen::VectorXd::Zero(norms.size());
+  for (Eigen::Index c = 0; c < norms.size(); ++c) {
+    if (norms(c) > negligible) inverse(c) = 1.0 / norms(c);
+  }
+  return inverse;
+}
+
 std::vector<int> cv_fold_of(int n, int folds, std::uint64_t seed) {
   std::vector<int> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);

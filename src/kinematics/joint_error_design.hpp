@@ -68,6 +68,11 @@ void design_rows(const JointErrorModel::State& s, const SerialChain& chain_x,
 Eigen::MatrixXd design_matrix(const JointErrorModel::State& s, const Eigen::VectorXd& x,
                               const std::vector<JointVector>& q_rad);
 
+/// 1 / |column| of `a`, and 0 for a column that is zero up to rounding (|column| <= 1e-10 of the
+/// largest), e.g. the last joint's rotation when the marker sits on its axis: scaled to unit
+/// norm, such a column would be rounding noise the solve could fit.
+Eigen::VectorXd inverse_column_norms(const Eigen::MatrixXd& a);
+
 /// Fold of each of `n` items, 0..folds-1, from a seeded shuffle (same seed, same folds).
 std::vector<int> cv_fold_of(int n, int folds, std::uint64_t seed);
 

@@ -1,4 +1,5 @@
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -28,21 +29,28 @@ void JointErrorModelOptions::validate() const {
   VRREG_THROW_UNLESS(cv_folds >= 2, "joint error model: cv_folds must be >= 2, got " << cv_folds);
 }
 
-JointErrorStep solve_rank_revealing(const Eigen::MatrixXd& a, const Eigen::VectorXd& r,
-                                    double relative_rank_tolerance) {
-  Eigen::VectorXd norms = a.colwise().norm().transpose();
-  for (Eigen::Index c = 0; c < norms.size(); ++c) {
-    if (!(norms(c) > 0.0)) norms(c) = 1.0;  // an all-zero column: its pivot is zero, rank drops
-  }
+std::vector<Eigen::Index> independent_columns(const Eigen::MatrixXd& a,
+                                              double relative_rank_tolerance) {
   // Unit-norm columns make the threshold independent of units (rad vs m, degree of P_k).
-  const Eigen::MatrixXd scaled = a * norms.cwiseInverse().asDiagonal();
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
-  cod.setThreshold(relative_rank_tolerance);
-  cod.compute(scaled);
-  JointErrorStep step;
-  step.dx = cod.solve(r).cwiseQuotient(norms);
-  step.rank = static_cast<int>(cod.rank());
-  return step;
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a * inverse_column_norms(a).asDiagonal());
+  qr.setThreshold(relative_rank_tolerance);
+  std::vector<Eigen::Index> cols;
+  for (Eigen::Index k = 0; k < qr.rank(); ++k) cols.push_back(qr.colsPermutation().indices()(k));
+  std::sort(cols.begin(), cols.end());
+  return cols;
+}
+
+Eigen::VectorXd solve_columns(const Eigen::MatrixXd& a, const std::vector<Eigen::Index>& cols,
+                              const Eigen::VectorXd& r) {
+  const Eigen::MatrixXd sub = a(Eigen::all, cols);
+  const Eigen::VectorXd inverse_norms = inverse_column_norms(sub);
+  const Eigen::VectorXd y =
+      Eigen::HouseholderQR<Eigen::MatrixXd>(sub * inverse_norms.asDiagonal()).solve(r);
+  Eigen::VectorXd dx = Eigen::VectorXd::Zero(a.cols());
+  for (std::size_t k = 0; k < cols.size(); ++k) {
+    dx(cols[k]) = y(static_cast<Eigen::Index>(k)) * inverse_norms(static_cast<Eigen::Index>(k));
+  }
+  return dx;
 }
 
 JointErrorModel::State make_joint_error_state(
@@ -98,31 +106,50 @@ int fit_joint_error_parameters(JointErrorModel::State& s, const std::vector<Join
                                const ConstPoints3Ref& error_robot_m,
                                const JointErrorModelOptions& options) {
   const auto n_rows = static_cast<Eigen::Index>(3 * q_rad.size());
-  const Eigen::Map<const Eigen::VectorXd> e(error_robot_m.data(), n_rows);  // column-major 3 x J
+  const Points3 e_points = error_robot_m;  // a Ref may have an outer stride: stack a copy
+  const Eigen::Map<const Eigen::VectorXd> e(e_points.data(), n_rows);
   s.x = Eigen::VectorXd::Zero(s.layout.n_columns());
-  s.linear = options.gauss_newton_iterations == 0;
-  int rank = 0;
-  for (int it = 0; it <= options.gauss_newton_iterations; ++it) {
-    const SerialChain chain_x = perturbed_chain(s, s.x);
+  s.linear = true;
+  // The identifiable parameters are chosen once, at the nominal linearisation (redundant ones
+  // eliminated, Hollerbach & Wampler 1996 sec. 5): later iterates may make a dropped direction
+  // weakly visible (a fitted marker offset moves the marker off the last joint's axis), and
+  // fitting noise along it would throw Gauss-Newton off.
+  const Eigen::MatrixXd a0 = design_matrix(s, s.x, q_rad);
+  const std::vector<Eigen::Index> cols = independent_columns(a0, options.relative_rank_tolerance);
+  VRREG_THROW_UNLESS(static_cast<Eigen::Index>(cols.size()) < n_rows,
+                     "joint error model: " << q_rad.size() << " fiducials (" << n_rows
+                                           << " equations) for " << cols.size()
+                                           << " identifiable parameters: need more "
+                                              "fiducials or lower degrees");
+  s.x = solve_columns(a0, cols, e);
+  // Gauss-Newton on the exact model while it lowers the residual, kept only if it ends below the
+  // first-order fit: near-degenerate parameter combinations (parallel joints, a fixed tool
+  // orientation coupling joints 2-4) may cancel at first order and not beyond.
+  auto exact_residual = [&](const Eigen::VectorXd& x) {
+    const SerialChain chain_x = perturbed_chain(s, x);
     Eigen::VectorXd r = e;
-    if (it > 0) {
-      for (std::size_t j = 0; j < q_rad.size(); ++j) {
-        r.segment<3>(3 * static_cast<Eigen::Index>(j)) -= model_error_m(s, chain_x, s.x, q_rad[j]);
-      }
+    for (std::size_t j = 0; j < q_rad.size(); ++j) {
+      r.segment<3>(3 * static_cast<Eigen::Index>(j)) -= model_error_m(s, chain_x, x, q_rad[j]);
     }
-    const JointErrorStep step =
-        solve_rank_revealing(design_matrix(s, s.x, q_rad), r, options.relative_rank_tolerance);
-    rank = step.rank;
-    VRREG_THROW_UNLESS(rank < n_rows, "joint error model: " << q_rad.size() << " fiducials ("
-                                                            << n_rows << " equations) for "
-                                                            << rank
-                                                            << " identifiable parameters: "
-                                                               "need more fiducials or lower degrees");
-    s.x += step.dx;
-    // Converged when the step no longer moves the marker by more than a picometre-scale amount.
-    if (it > 0 && step.dx.norm() <= 1e-14 * (1.0 + s.x.norm())) break;
+    return r;
+  };
+  if (options.gauss_newton_iterations == 0) return static_cast<int>(cols.size());
+  Eigen::VectorXd x = s.x;
+  Eigen::VectorXd r = exact_residual(x);
+  for (int it = 0; it < options.gauss_newton_iterations; ++it) {
+    const Eigen::VectorXd dx = solve_columns(design_matrix(s, x, q_rad), cols, r);
+    const Eigen::VectorXd r_next = exact_residual(x + dx);
+    if (!(r_next.squaredNorm() < r.squaredNorm())) break;
+    x += dx;
+    r = r_next;
+    // Converged when the step is at rounding level of the parameters.
+    if (dx.norm() <= 1e-14 * (1.0 + x.norm())) break;
   }
-  return rank;
+  if (r.squaredNorm() <= (a0 * s.x - e).squaredNorm()) {
+    s.x = x;
+    s.linear = false;
+  }
+  return static_cast<int>(cols.size());
 }
 
 }  // namespace vrreg::kinematics

@@ -8,14 +8,13 @@
 
 namespace vrreg::kinematics {
 
-/// Least-squares step of a rank-revealing solve: minimum-norm dx of |A dx - r| on unit-norm
-/// columns (complete orthogonal decomposition, Eigen), and the numerical rank.
-struct JointErrorStep {
-  Eigen::VectorXd dx;
-  int rank = 0;
-};
-JointErrorStep solve_rank_revealing(const Eigen::MatrixXd& a, const Eigen::VectorXd& r,
-                                    double relative_rank_tolerance);
+/// A maximal set of independent columns of `a` (column-pivoted Householder QR on unit-norm
+/// columns, pivots below `relative_rank_tolerance` of the largest dropped), ascending.
+std::vector<Eigen::Index> independent_columns(const Eigen::MatrixXd& a,
+                                              double relative_rank_tolerance);
+/// Least-squares dx of |A dx - r| with only the columns `cols` free (the others 0).
+Eigen::VectorXd solve_columns(const Eigen::MatrixXd& a, const std::vector<Eigen::Index>& cols,
+                              const Eigen::VectorXd& r);
 
 /// Checks the fit's inputs (throws InputError) and the state every fit shares: ranges of the
 /// joints and the trend's centre and scale from these fiducials; layout without degrees.

@@ -35,8 +35,10 @@ struct JointErrorModelOptions {
   bool marker_offset = true;  ///< a 3-vector delta of the marker's flange offset
   int trend_degree = 2;       ///< Cartesian trend per axis: -1 none, 0 constant, 1 linear, 2 quadratic
   /// Gauss-Newton iterations with the exact perturbed-chain kinematics after the first-order
-  /// solve; 0: first-order model (linear in the parameters, predictions linear too).
-  int gauss_newton_iterations = 3;
+  /// solve, each kept only if it lowers the residual (else the model stays first-order: linear
+  /// in the parameters, predictions linear too). Off by default: on the simulated cells the
+  /// trend and the joint functions absorb the second-order terms (docs/joint-space-model.md).
+  int gauss_newton_iterations = 0;
   /// Rank threshold of the column-pivoted (complete orthogonal) solve, relative to the largest
   /// pivot, on unit-norm columns: directions weaker than this are not identifiable and are left
   /// at zero (minimum-norm solution).
