@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include "vrreg/core/random.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/joint_vector.hpp"
 #include "vrreg/kinematics/pose.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
@@ -36,6 +37,12 @@ inline Eigen::Isometry3d pose_from(const Eigen::Vector3d& xyz_m, double roll, do
   t.linear() = rotation_from_rpy(roll, pitch, yaw);
   t.translation() = xyz_m;
   return t;
+}
+
+/// A marker at `p_flange_m` (flange frame) in the robot base frame at joints `q` [m].
+inline Eigen::Vector3d marker_at(const SerialChain& chain, const JointRef& q,
+                                 const Eigen::Vector3d& p_flange_m) {
+  return chain.T_base_dh0() * (flange_in_dh0(chain, q) * p_flange_m);
 }
 
 }  // namespace vrreg::kinematics::testing

@@ -1,0 +1,106 @@
+#pragma once
+// A joint-space model of a robot's positioning error (issue 12), fitted to fiducials by linear
+// least squares through the robot's Jacobian, as in kinematic calibration (Mooring, Roth &
+// Driels 1991; Hollerbach & Wampler 1996), extended by smooth per-joint angle-error functions
+// (Legendre polynomials over each joint's observed range) and a quadratic Cartesian trend.
+//
+// Sign convention: the model predicts e(q) = y_observed - y_nominal in the ROBOT frame [m], where
+// y_nominal = FK_nominal(q) p_flange_marker and y_observed is where the marker really was (e.g.
+// R X + tau, the registered sensor reading). A corrected target is y_observed_t - e(q_t).
+//
+// e(q) = p_actual(q + dq(q)) - p_nominal(q) + trend(p_nominal(q)), with
+//   dq_i(q) = sum_k c_ik P_k(u_i(q_i))   (k = 0: the joint offset; u_i maps the range to [-1, 1])
+//   p_actual: the nominal DH table plus deltas of a, d, alpha per row and a marker offset delta,
+//   trend: 10 monomials of the nominal position per axis (absorbs a slightly wrong registration).
+// Without Gauss-Newton iterations the model is its first-order (linear) expansion at zero.
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "vrreg/core/types.hpp"
+#include "vrreg/kinematics/joint_vector.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
+
+namespace vrreg::kinematics {
+
+/// What the model contains and how it is fitted.
+struct JointErrorModelOptions {
+  /// Legendre degree of each joint's angle-error function (0: a constant offset only). Empty:
+  /// chosen per joint by K-fold cross-validation among 0..max_joint_degree.
+  std::vector<int> joint_degrees;
+  int max_joint_degree = 40;  ///< largest degree the automatic choice tries
+  bool dh_deltas = true;      ///< a, d, alpha deltas of every DH row
+  bool marker_offset = true;  ///< a 3-vector delta of the marker's flange offset
+  int trend_degree = 2;       ///< Cartesian trend per axis: -1 none, 0 constant, 1 linear, 2 quadratic
+  /// Gauss-Newton iterations with the exact perturbed-chain kinematics after the first-order
+  /// solve, each kept only if it lowers the residual (else the model stays first-order: linear
+  /// in the parameters, predictions linear too). Off by default: on the simulated cells the
+  /// trend and the joint functions absorb the second-order terms (docs/joint-space-model.md).
+  int gauss_newton_iterations = 0;
+  /// Rank threshold of the column-pivoted (complete orthogonal) solve, relative to the largest
+  /// pivot, on unit-norm columns: directions weaker than this are not identifiable and are left
+  /// at zero (minimum-norm solution).
+  double relative_rank_tolerance = 1e-9;
+  int cv_folds = 5;           ///< folds of the degree choice and of joint_error_cv_rms_m
+  std::uint64_t cv_seed = 1;  ///< decides which fiducial goes to which fold
+  /// Throws InputError on a value out of range.
+  void validate() const;
+};
+
+/// A fitted joint-space error model. Immutable; fit with JointErrorModel::fit.
+class JointErrorModel {
+ public:
+  /// Fits the model to fiducials at commanded joints `q_rad` [rad] whose observed errors are
+  /// `error_robot_m` (3 x J, y_observed - y_nominal, robot frame, m). `p_flange_marker_m`: the
+  /// marker in the flange frame [m]; empty: the chain's TCP. Throws InputError on joint-count
+  /// mismatch, non-finite values, or fewer equations (3 J) than the identifiable rank + 1.
+  static JointErrorModel fit(const SerialChain& nominal, const std::vector<JointVector>& q_rad,
+                             const ConstPoints3Ref& error_robot_m,
+                             const JointErrorModelOptions& options = {},
+                             const std::optional<Eigen::Vector3d>& p_flange_marker_m = {});
+
+  /// Predicted y_observed - y_nominal at commanded joints `q_rad` [m, robot frame]. Joint angles
+  /// outside a joint's fitted range use the function's value at the nearer end.
+  [[nodiscard]] Eigen::Vector3d predict_m(const JointRef& q_rad) const;
+  /// predict_m for each joint vector, one column each.
+  [[nodiscard]] Points3 predict_m(const std::vector<JointVector>& q_rad) const;
+
+  /// Observed minus predicted error at each fiducial (3 x J, m), e.g. for kriging what remains.
+  [[nodiscard]] const Points3& residuals_m() const { return residuals_m_; }
+  /// sqrt(mean_j |residual_j|^2) [m].
+  [[nodiscard]] double residual_rms_m() const;
+  /// Numerical rank of the last least-squares solve.
+  [[nodiscard]] int rank() const { return rank_; }
+  /// Number of parameters (columns) of the model.
+  [[nodiscard]] int n_parameters() const { return static_cast<int>(parameters().size()); }
+  /// The Legendre degree of each joint's function (given or chosen).
+  [[nodiscard]] const std::vector<int>& joint_degrees() const { return degrees_; }
+  /// First-order K-fold CV RMS of the degree choice [m]; NaN when degrees were given.
+  [[nodiscard]] double selection_cv_rms_m() const { return selection_cv_rms_m_; }
+  /// The fitted parameters in the unscaled units (rad, m), layout documented in the source.
+  [[nodiscard]] const Eigen::VectorXd& parameters() const;
+
+  // Implementation state, public for the module's helpers (see src/kinematics/joint_error_*.hpp).
+  struct State;
+  explicit JointErrorModel(std::shared_ptr<const State> state, Points3 residuals_m, int rank,
+                           std::vector<int> degrees, double selection_cv_rms_m);
+
+ private:
+  std::shared_ptr<const State> state_;
+  Points3 residuals_m_;
+  int rank_ = 0;
+  std::vector<int> degrees_;
+  double selection_cv_rms_m_ = 0.0;
+};
+
+/// K-fold cross-validation RMS [m] of the joint-space model on the fiducials (deterministic folds
+/// from options.cv_seed): each fold predicted by a model fitted on the others, with the joint
+/// degrees of options (or, when empty, chosen once on all fiducials), sqrt(mean |error|^2).
+double joint_error_cv_rms_m(const SerialChain& nominal, const std::vector<JointVector>& q_rad,
+                            const ConstPoints3Ref& error_robot_m,
+                            const JointErrorModelOptions& options = {},
+                            const std::optional<Eigen::Vector3d>& p_flange_marker_m = {});
+
+}  // namespace vrreg::kinematics

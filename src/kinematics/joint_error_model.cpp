@@ -1,0 +1,101 @@
+#include "vrreg/kinematics/joint_error_model.hpp"
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "joint_error_solve.hpp"
+#include "vrreg/core/check.hpp"
+
+namespace vrreg::kinematics {
+
+JointErrorModel::JointErrorModel(std::shared_ptr<const State> state, Points3 residuals_m, int rank,
+                                 std::vector<int> degrees, double selection_cv_rms_m)
+    : state_(std::move(state)),
+      residuals_m_(std::move(residuals_m)),
+      rank_(rank),
+      degrees_(std::move(degrees)),
+      selection_cv_rms_m_(selection_cv_rms_m) {}
+
+JointErrorModel JointErrorModel::fit(const SerialChain& nominal,
+                                     const std::vector<JointVector>& q_rad,
+                                     const ConstPoints3Ref& error_robot_m,
+                                     const JointErrorModelOptions& options,
+                                     const std::optional<Eigen::Vector3d>& p_flange_marker_m) {
+  auto s = std::make_shared<State>(
+      make_joint_error_state(nominal, q_rad, error_robot_m, options, p_flange_marker_m));
+  double selection_cv = std::numeric_limits<double>::quiet_NaN();
+  if (options.joint_degrees.empty()) {
+    const JointDegreeChoice choice = choose_joint_degrees(*s, q_rad, error_robot_m, options);
+    s->layout.degrees = choice.degrees;
+    selection_cv = choice.cv_rms_m;
+  } else {
+    s->layout.degrees = options.joint_degrees;
+  }
+  const int rank = fit_joint_error_parameters(*s, q_rad, error_robot_m, options);
+  const SerialChain chain_x = perturbed_chain(*s, s->x);
+  Points3 residuals = error_robot_m;
+  for (std::size_t j = 0; j < q_rad.size(); ++j) {
+    residuals.col(static_cast<Eigen::Index>(j)) -= predict_joint_error_m(*s, chain_x, q_rad[j]);
+  }
+  std::vector<int> degrees = s->layout.degrees;
+  return JointErrorModel(std::move(s), std::move(residuals), rank, std::move(degrees),
+                         selection_cv);
+}
+
+Eigen::Vector3d JointErrorModel::predict_m(const JointRef& q_rad) const {
+  state_->nominal.check_joints(q_rad, "joint error model prediction");
+  return predict_joint_error_m(*state_, perturbed_chain(*state_, state_->x), q_rad);
+}
+
+Points3 JointErrorModel::predict_m(const std::vector<JointVector>& q_rad) const {
+  const SerialChain chain_x = perturbed_chain(*state_, state_->x);
+  Points3 out(3, static_cast<Eigen::Index>(q_rad.size()));
+  for (std::size_t j = 0; j < q_rad.size(); ++j) {
+    state_->nominal.check_joints(q_rad[j], "joint error model prediction");
+    out.col(static_cast<Eigen::Index>(j)) = predict_joint_error_m(*state_, chain_x, q_rad[j]);
+  }
+  return out;
+}
+
+double JointErrorModel::residual_rms_m() const {
+  if (residuals_m_.cols() == 0) return 0.0;
+  return std::sqrt(residuals_m_.colwise().squaredNorm().mean());
+}
+
+const Eigen::VectorXd& JointErrorModel::parameters() const { return state_->x; }
+
+double joint_error_cv_rms_m(const SerialChain& nominal, const std::vector<JointVector>& q_rad,
+                            const ConstPoints3Ref& error_robot_m,
+                            const JointErrorModelOptions& options,
+                            const std::optional<Eigen::Vector3d>& p_flange_marker_m) {
+  JointErrorModelOptions fixed = options;
+  if (fixed.joint_degrees.empty()) {
+    const JointErrorModel::State s =
+        make_joint_error_state(nominal, q_rad, error_robot_m, options, p_flange_marker_m);
+    fixed.joint_degrees = choose_joint_degrees(s, q_rad, error_robot_m, options).degrees;
+  }
+  const int n = static_cast<int>(q_rad.size());
+  VRREG_THROW_UNLESS(n >= options.cv_folds, "joint error model: " << n << " fiducials for "
+                                                                   << options.cv_folds << " folds");
+  const std::vector<int> fold = cv_fold_of(n, options.cv_folds, options.cv_seed);
+  double sum_sq = 0.0;
+  for (int f = 0; f < options.cv_folds; ++f) {
+    std::vector<JointVector> q_train;
+    std::vector<JointVector> q_test;
+    std::vector<Eigen::Index> train;
+    std::vector<Eigen::Index> test;
+    for (int j = 0; j < n; ++j) {
+      const bool held_out = fold[static_cast<std::size_t>(j)] == f;
+      (held_out ? q_test : q_train).push_back(q_rad[static_cast<std::size_t>(j)]);
+      (held_out ? test : train).push_back(j);
+    }
+    const Points3 e_train = error_robot_m(Eigen::all, train);
+    const JointErrorModel model =
+        JointErrorModel::fit(nominal, q_train, e_train, fixed, p_flange_marker_m);
+    sum_sq += (error_robot_m(Eigen::all, test) - model.predict_m(q_test)).colwise().squaredNorm().sum();
+  }
+  return std::sqrt(sum_sq / n);
+}
+
+}  // namespace vrreg::kinematics
