@@ -77,7 +77,8 @@ class DegreeScorer {
 
 FoldGrams fold_grams(const JointErrorModel::State& full, const std::vector<JointVector>& q_rad,
                      const ConstPoints3Ref& error_robot_m, const JointErrorModelOptions& options) {
-  const Eigen::MatrixXd a = design_matrix(full, Eigen::VectorXd::Zero(full.layout.n_columns()), q_rad);
+  const Eigen::MatrixXd a =
+      design_matrix(full, Eigen::VectorXd::Zero(full.layout.n_columns()), q_rad);
   const Eigen::VectorXd inverse_norms = inverse_column_norms(a);
   const int n = static_cast<int>(q_rad.size());
   const std::vector<int> fold = cv_fold_of(n, options.cv_folds, options.cv_seed);
@@ -109,8 +110,7 @@ FoldGrams fold_grams(const JointErrorModel::State& full, const std::vector<Joint
     g.gram_all += g.gram[k];
     g.rhs_all += g.rhs[k];
   }
-  // Unit diagonal over all rows (the ridge is relative to it).
-  return g;
+  return g;  // gram_all has a unit diagonal (zero for negligible columns): the ridge is relative
 }
 
 }  // namespace
@@ -120,9 +120,9 @@ JointDegreeChoice choose_joint_degrees(const JointErrorModel::State& s,
                                        const ConstPoints3Ref& error_robot_m,
                                        const JointErrorModelOptions& options) {
   const int n = s.nominal.n_joints();
-  VRREG_THROW_UNLESS(static_cast<int>(q_rad.size()) >= options.cv_folds,
-                     "joint error model: " << q_rad.size() << " fiducials for " << options.cv_folds
-                                           << " folds");
+  VRREG_THROW_UNLESS(
+      static_cast<int>(q_rad.size()) >= options.cv_folds,
+      "joint error model: " << q_rad.size() << " fiducials for " << options.cv_folds << " folds");
   JointErrorModel::State full = s;
   full.layout.degrees.assign(static_cast<std::size_t>(n), options.max_joint_degree);
   const FoldGrams grams = fold_grams(full, q_rad, error_robot_m, options);

@@ -54,8 +54,9 @@ double joint_unit(const JointErrorModel::State& s, int joint, double q_rad) {
 void trend_monomials(const JointErrorModel::State& s, const Eigen::Vector3d& p_nominal_m, int n,
                      double* out) {
   const Eigen::Vector3d v = (p_nominal_m - s.trend_centre_m) / s.trend_scale_m;
-  const double all[10] = {1.0,        v.x(),         v.y(),         v.z(),         v.x() * v.x(),
-                          v.x() * v.y(), v.x() * v.z(), v.y() * v.y(), v.y() * v.z(), v.z() * v.z()};
+  const double all[10] = {1.0,           v.x(),         v.y(),         v.z(),
+                          v.x() * v.x(), v.x() * v.y(), v.x() * v.z(), v.y() * v.y(),
+                          v.y() * v.z(), v.z() * v.z()};
   std::copy(all, all + n, out);
 }
 
@@ -169,7 +170,8 @@ std::vector<int> cv_fold_of(int n, int folds, std::uint64_t seed) {
     std::swap(order[static_cast<std::size_t>(i)], order[k]);
   }
   std::vector<int> fold(static_cast<std::size_t>(n));
-  for (int r = 0; r < n; ++r) fold[static_cast<std::size_t>(order[static_cast<std::size_t>(r)])] = r % folds;
+  for (int r = 0; r < n; ++r)
+    fold[static_cast<std::size_t>(order[static_cast<std::size_t>(r)])] = r % folds;
   return fold;
 }
 

@@ -64,7 +64,7 @@ Eigen::Vector3d model_error_m(const JointErrorModel::State& s, const SerialChain
 /// Design rows d e / d x at parameters `x` (3 x n_columns) into `rows`.
 void design_rows(const JointErrorModel::State& s, const SerialChain& chain_x,
                  const Eigen::VectorXd& x, const JointRef& q_rad, Eigen::Ref<Eigen::MatrixXd> rows);
-/// The stacked design matrix (3 J x n_columns) of all `q_rad` at `x`, and the model values.
+/// The stacked design matrix (3 J x n_columns) of all `q_rad` at `x`, 3 rows per fiducial.
 Eigen::MatrixXd design_matrix(const JointErrorModel::State& s, const Eigen::VectorXd& x,
                               const std::vector<JointVector>& q_rad);
 

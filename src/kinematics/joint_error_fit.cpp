@@ -1,3 +1,5 @@
+// Fitting the joint-space error model: input checks, the shared state, the first-order solve
+// and the optional Gauss-Newton refinement (joint_error_model.hpp).
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
@@ -11,8 +13,9 @@
 namespace vrreg::kinematics {
 
 void JointErrorModelOptions::validate() const {
-  VRREG_THROW_UNLESS(max_joint_degree >= 0 && max_joint_degree <= 60,
-                     "joint error model: max_joint_degree must be in 0..60, got " << max_joint_degree);
+  VRREG_THROW_UNLESS(
+      max_joint_degree >= 0 && max_joint_degree <= 60,
+      "joint error model: max_joint_degree must be in 0..60, got " << max_joint_degree);
   for (const int d : joint_degrees) {
     VRREG_THROW_UNLESS(d >= 0 && d <= 60,
                        "joint error model: a joint degree must be in 0..60, got " << d);
@@ -63,10 +66,10 @@ JointErrorModel::State make_joint_error_state(
   VRREG_THROW_UNLESS(static_cast<Eigen::Index>(q_rad.size()) == error_robot_m.cols(),
                      "joint error model: " << q_rad.size() << " joint vectors but "
                                            << error_robot_m.cols() << " errors");
-  VRREG_THROW_UNLESS(options.joint_degrees.empty() ||
-                         static_cast<int>(options.joint_degrees.size()) == n,
-                     "joint error model: " << options.joint_degrees.size() << " joint degrees for "
-                                           << n << " joints");
+  VRREG_THROW_UNLESS(
+      options.joint_degrees.empty() || static_cast<int>(options.joint_degrees.size()) == n,
+      "joint error model: " << options.joint_degrees.size() << " joint degrees for " << n
+                            << " joints");
   VRREG_THROW_UNLESS(error_robot_m.allFinite(), "joint error model: non-finite observed error");
   VRREG_THROW_UNLESS(!p_flange_marker_m || p_flange_marker_m->allFinite(),
                      "joint error model: non-finite marker offset");

@@ -77,7 +77,7 @@ double joint_error_cv_rms_m(const SerialChain& nominal, const std::vector<JointV
   }
   const int n = static_cast<int>(q_rad.size());
   VRREG_THROW_UNLESS(n >= options.cv_folds, "joint error model: " << n << " fiducials for "
-                                                                   << options.cv_folds << " folds");
+                                                                  << options.cv_folds << " folds");
   const std::vector<int> fold = cv_fold_of(n, options.cv_folds, options.cv_seed);
   double sum_sq = 0.0;
   for (int f = 0; f < options.cv_folds; ++f) {
@@ -93,7 +93,8 @@ double joint_error_cv_rms_m(const SerialChain& nominal, const std::vector<JointV
     const Points3 e_train = error_robot_m(Eigen::all, train);
     const JointErrorModel model =
         JointErrorModel::fit(nominal, q_train, e_train, fixed, p_flange_marker_m);
-    sum_sq += (error_robot_m(Eigen::all, test) - model.predict_m(q_test)).colwise().squaredNorm().sum();
+    sum_sq +=
+        (error_robot_m(Eigen::all, test) - model.predict_m(q_test)).colwise().squaredNorm().sum();
   }
   return std::sqrt(sum_sq / n);
 }

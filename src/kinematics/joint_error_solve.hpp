@@ -18,11 +18,10 @@ Eigen::VectorXd solve_columns(const Eigen::MatrixXd& a, const std::vector<Eigen:
 
 /// Checks the fit's inputs (throws InputError) and the state every fit shares: ranges of the
 /// joints and the trend's centre and scale from these fiducials; layout without degrees.
-JointErrorModel::State make_joint_error_state(const SerialChain& nominal,
-                                              const std::vector<JointVector>& q_rad,
-                                              const ConstPoints3Ref& error_robot_m,
-                                              const JointErrorModelOptions& options,
-                                              const std::optional<Eigen::Vector3d>& p_flange_marker_m);
+JointErrorModel::State make_joint_error_state(
+    const SerialChain& nominal, const std::vector<JointVector>& q_rad,
+    const ConstPoints3Ref& error_robot_m, const JointErrorModelOptions& options,
+    const std::optional<Eigen::Vector3d>& p_flange_marker_m);
 
 /// Gauss-Newton (first step = the first-order solve) of `s` with its layout set; fills s.x and
 /// s.linear and returns the rank of the last solve.

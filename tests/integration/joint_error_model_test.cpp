@@ -10,10 +10,10 @@
 
 #include "joint_error_cells.hpp"
 #include "simulation_test_support.hpp"
-#include "vrreg/simulation/cartesian_error_field.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/experiments/table1.hpp"
 #include "vrreg/experiments/table2.hpp"
+#include "vrreg/simulation/cartesian_error_field.hpp"
 #include "vrreg/simulation/testbed.hpp"
 
 namespace vrreg {
@@ -50,16 +50,20 @@ void kuka_cell(std::uint64_t seed) {
   for (const int config : rrbc.configs) {
     std::vector<Eigen::Index> rows;
     for (std::size_t k = 0; k < o.targets.size(); ++k) {
-      if (set.locations[o.targets[k]].config == config) rows.push_back(static_cast<Eigen::Index>(k));
+      if (set.locations[o.targets[k]].config == config)
+        rows.push_back(static_cast<Eigen::Index>(k));
     }
     const double cor_m = testing::rms_at(o.cor_tre_m, rows);
     const double floor_m = testing::rms_at(o.floor_tre_m, rows);
-    std::printf("KUKA seed %llu config %d: joint model %.4f mm, strategy 2 %.4f mm, strategy 3 %.4f mm, "
-                "floor %.4f mm (%zu targets)\n",
-                static_cast<unsigned long long>(seed), config, kMm * cor_m, kMm * rrbc.at(config, 2).figures.cor_rms_t_m,
-                kMm * rrbc.at(config, 3).figures.cor_rms_t_m, kMm * floor_m, rows.size());
+    std::printf(
+        "KUKA seed %llu config %d: joint model %.4f mm, strategy 2 %.4f mm, strategy 3 %.4f mm, "
+        "floor %.4f mm (%zu targets)\n",
+        static_cast<unsigned long long>(seed), config, kMm * cor_m,
+        kMm * rrbc.at(config, 2).figures.cor_rms_t_m, kMm * rrbc.at(config, 3).figures.cor_rms_t_m,
+        kMm * floor_m, rows.size());
     EXPECT_LT(cor_m, 0.125e-3) << "seed " << seed << " config " << config;
-    EXPECT_LT(cor_m, rrbc.at(config, 2).figures.cor_rms_t_m) << "seed " << seed << " config " << config;
+    EXPECT_LT(cor_m, rrbc.at(config, 2).figures.cor_rms_t_m)
+        << "seed " << seed << " config " << config;
   }
 }
 
@@ -76,11 +80,11 @@ TEST(JointErrorModelCells, A1CorrectsToTheNoiseFloor) {
     const double octuplet_m = experiments::run_table1_entry(set, "A1", t1).figures.cor_rms_t_m;
     const double cor_m = root_mean_square(o.cor_tre_m);
     const double floor_m = root_mean_square(o.floor_tre_m);
-    std::printf("A1 seed %llu: joint model %.4f mm, octuplet %.4f mm, floor %.4f mm; degrees %s, "
-                "rank %d of %d, residual %.4f mm\n",
-                static_cast<unsigned long long>(seed), kMm * cor_m, kMm * octuplet_m,
-                kMm * floor_m, degrees_text(o.degrees).c_str(), o.rank, o.n_parameters,
-                kMm * o.residual_rms_m);
+    std::printf(
+        "A1 seed %llu: joint model %.4f mm, octuplet %.4f mm, floor %.4f mm; degrees %s, "
+        "rank %d of %d, residual %.4f mm\n",
+        static_cast<unsigned long long>(seed), kMm * cor_m, kMm * octuplet_m, kMm * floor_m,
+        degrees_text(o.degrees).c_str(), o.rank, o.n_parameters, kMm * o.residual_rms_m);
     EXPECT_LT(cor_m, 0.5 * octuplet_m) << "seed " << seed;
     EXPECT_LT(cor_m, 1.15 * floor_m) << "seed " << seed;
     joint.push_back(cor_m);
@@ -106,7 +110,7 @@ TEST(JointErrorModelCells, CartesianFieldIsNotFittedByTheJointModel) {
   Random rng(51);
   const CartesianErrorField field =
       CartesianErrorField::random(rng, ur5.volume_centre_m, 0.15, 0.6e-3, 0.15e-3);
-  constexpr double kNoise = 0.02e-3;  // per axis, the size of A1's mean-of-12 tracker noise
+  constexpr double kNoise = 0.02e-3;   // per axis, the size of A1's mean-of-12 tracker noise
   for (Location& l : set.locations) {  // sensor frame = robot frame, so the registration is ~I
     l.sensor_m = l.robot_m + field.error_m(l.robot_m) + rng.normal3(kNoise);
   }
@@ -136,10 +140,11 @@ TEST(JointErrorModelCells, CartesianFieldIsNotFittedByTheJointModel) {
     wavy_sq += (field.error_m(fid_robot.col(j)) - smooth.error_m(fid_robot.col(j))).squaredNorm();
   }
   const double wavy_m = std::sqrt(wavy_sq / static_cast<double>(fid_robot.cols()));
-  std::printf("Cartesian field: joint model %.4f mm (CV %.4f mm, degrees %s), trilinear grid "
-              "%.4f mm, wavy part %.4f mm, noise %.4f mm\n",
-              kMm * joint_m, kMm * cv_m, degrees_text(model.joint_degrees()).c_str(),
-              kMm * grid_m, kMm * wavy_m, kMm * noise_m);
+  std::printf(
+      "Cartesian field: joint model %.4f mm (CV %.4f mm, degrees %s), trilinear grid "
+      "%.4f mm, wavy part %.4f mm, noise %.4f mm\n",
+      kMm * joint_m, kMm * cv_m, degrees_text(model.joint_degrees()).c_str(), kMm * grid_m,
+      kMm * wavy_m, kMm * noise_m);
   // The wavy part stays in the cross-validated error: the model does not pretend to fit it.
   EXPECT_GT(cv_m, 3.0 * noise_m);
   EXPECT_GT(cv_m, 0.7 * wavy_m);

@@ -1,17 +1,18 @@
 // The joint-space error model on robots whose error it can represent exactly (DH deltas, joint
 // offsets, polynomial joint errors, a marker offset): predictions at held-out joints recovered to
 // 1e-9 m, with and without noise; bad input reported.
+#include "vrreg/kinematics/joint_error_model.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "kinematics/joint_error_solve.hpp"
 #include "kinematics_test_support.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/random.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
-#include "vrreg/kinematics/joint_error_model.hpp"
 #include "vrreg/kinematics/robots.hpp"
-#include "kinematics/joint_error_solve.hpp"
 
 namespace vrreg::kinematics {
 namespace {
@@ -55,13 +56,13 @@ TruthRobot make_truth(double scale, std::uint64_t seed) {
   // Off the last joint's axis, so that joint 6's error moves the marker (on the axis it cannot be
   // seen at first order and the model leaves it out).
   const Eigen::Vector3d p(0.03, -0.02, 0.06);
-  return TruthRobot{nominal,
-                    SerialChain("actual", rows, nominal.limits(), nominal.T_base_dh0(),
-                                nominal.T_flange_tcp()),
-                    p,
-                    p + rng.normal3(scale),
-                    q0,
-                    cubic};
+  return TruthRobot{
+      nominal,
+      SerialChain("actual", rows, nominal.limits(), nominal.T_base_dh0(), nominal.T_flange_tcp()),
+      p,
+      p + rng.normal3(scale),
+      q0,
+      cubic};
 }
 
 std::vector<JointVector> joints_near(const JointVector& q0, double half_width_rad, int n,
@@ -125,7 +126,8 @@ TEST(JointErrorModel, GaussNewtonRecoversItsOwnNonlinearModelExactly) {
   // The first-order model alone leaves the second-order terms, ~1e-6 m.
   const JointErrorModel linear =
       JointErrorModel::fit(truth.nominal, fid, e, cubic_options(0), truth.p_marker_m);
-  const double first_order_m = (linear.predict_m(tgt) - truth_errors(tgt)).colwise().norm().maxCoeff();
+  const double first_order_m =
+      (linear.predict_m(tgt) - truth_errors(tgt)).colwise().norm().maxCoeff();
   EXPECT_GT(first_order_m, 1e-8);
   EXPECT_LT(first_order_m, 2e-5);
 }
@@ -144,7 +146,8 @@ TEST(JointErrorModel, GaussNewtonRecoversAPerturbedRobotToItsRedundancy) {
   EXPECT_LT(max_prediction_error_m(m, truth, tgt), 1e-7);
   const JointErrorModel linear =
       JointErrorModel::fit(truth.nominal, fid, e, cubic_options(0), truth.p_marker_m);
-  EXPECT_GT(max_prediction_error_m(linear, truth, tgt), 5.0 * max_prediction_error_m(m, truth, tgt));
+  EXPECT_GT(max_prediction_error_m(linear, truth, tgt),
+            5.0 * max_prediction_error_m(m, truth, tgt));
 }
 
 TEST(JointErrorModel, FirstOrderRecoversTinyErrors) {
@@ -153,9 +156,8 @@ TEST(JointErrorModel, FirstOrderRecoversTinyErrors) {
   Random rng(14);
   const std::vector<JointVector> fid = joints_near(truth.q0, 0.3, 200, rng);
   const std::vector<JointVector> tgt = joints_near(truth.q0, 0.25, 50, rng);
-  const JointErrorModel m =
-      JointErrorModel::fit(truth.nominal, fid, errors_of(truth, fid), cubic_options(0),
-                           truth.p_marker_m);
+  const JointErrorModel m = JointErrorModel::fit(truth.nominal, fid, errors_of(truth, fid),
+                                                 cubic_options(0), truth.p_marker_m);
   EXPECT_LT(max_prediction_error_m(m, truth, tgt), 1e-9);
   for (const JointVector& q : tgt) {  // one-point and batch predictions agree
     EXPECT_LT((m.predict_m(q) - m.predict_m(std::vector<JointVector>{q}).col(0)).norm(), 1e-15);
@@ -188,7 +190,8 @@ TEST(JointErrorModel, DegreeChoiceByCrossValidationFindsTheCubics) {
   const std::vector<JointVector> tgt = joints_near(truth.q0, 0.25, 50, rng);
   JointErrorModelOptions o;
   o.max_joint_degree = 8;
-  const JointErrorModel m = JointErrorModel::fit(truth.nominal, fid, errors_of(truth, fid), o, truth.p_marker_m);
+  const JointErrorModel m =
+      JointErrorModel::fit(truth.nominal, fid, errors_of(truth, fid), o, truth.p_marker_m);
   ASSERT_EQ(m.joint_degrees().size(), 6u);
   EXPECT_LT(m.selection_cv_rms_m(), 1e-6);  // first-order CV: the second-order terms remain
   // The choice is by the first-order CV, whose floor here is the ~1e-6 m second-order terms.

@@ -1,10 +1,11 @@
 // The identification Jacobian of marker_partials against central finite differences of forward
 // kinematics with perturbed DH rows, joints and marker offsets.
+#include "vrreg/kinematics/marker_partials.hpp"
+
 #include <gtest/gtest.h>
 
 #include "kinematics_test_support.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
-#include "vrreg/kinematics/marker_partials.hpp"
 #include "vrreg/kinematics/robots.hpp"
 
 namespace vrreg::kinematics {
@@ -45,7 +46,8 @@ void expect_partials_match(const SerialChain& chain, std::uint64_t seed) {
     }
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d dp = kH * Eigen::Vector3d::Unit(k);
-      const Eigen::Vector3d fd = (marker_at(chain, q, p + dp) - marker_at(chain, q, p - dp)) / (2 * kH);
+      const Eigen::Vector3d fd =
+          (marker_at(chain, q, p + dp) - marker_at(chain, q, p - dp)) / (2 * kH);
       EXPECT_LT((fd - d.R_base_flange.col(k)).norm(), kTol);
     }
   }

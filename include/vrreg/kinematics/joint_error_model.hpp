@@ -33,15 +33,14 @@ struct JointErrorModelOptions {
   int max_joint_degree = 40;  ///< largest degree the automatic choice tries
   bool dh_deltas = true;      ///< a, d, alpha deltas of every DH row
   bool marker_offset = true;  ///< a 3-vector delta of the marker's flange offset
-  int trend_degree = 2;       ///< Cartesian trend per axis: -1 none, 0 constant, 1 linear, 2 quadratic
+  int trend_degree = 2;  ///< Cartesian trend per axis: -1 none, 0 constant, 1 linear, 2 quadratic
   /// Gauss-Newton iterations with the exact perturbed-chain kinematics after the first-order
   /// solve, each kept only if it lowers the residual (else the model stays first-order: linear
   /// in the parameters, predictions linear too). Off by default: on the simulated cells the
   /// trend and the joint functions absorb the second-order terms (docs/joint-space-model.md).
   int gauss_newton_iterations = 0;
-  /// Rank threshold of the column-pivoted (complete orthogonal) solve, relative to the largest
-  /// pivot, on unit-norm columns: directions weaker than this are not identifiable and are left
-  /// at zero (minimum-norm solution).
+  /// Rank threshold of the column-pivoted QR on unit-norm columns, relative to the largest
+  /// pivot: parameters whose pivot falls below it are redundant with the kept ones and stay 0.
   double relative_rank_tolerance = 1e-9;
   int cv_folds = 5;           ///< folds of the degree choice and of joint_error_cv_rms_m
   std::uint64_t cv_seed = 1;  ///< decides which fiducial goes to which fold
@@ -61,8 +60,9 @@ class JointErrorModel {
                              const JointErrorModelOptions& options = {},
                              const std::optional<Eigen::Vector3d>& p_flange_marker_m = {});
 
-  /// Predicted y_observed - y_nominal at commanded joints `q_rad` [m, robot frame]. Joint angles
-  /// outside a joint's fitted range use the function's value at the nearer end.
+  /// Predicted y_observed - y_nominal at commanded joints `q_rad` [m, robot frame]. Outside a
+  /// joint's fitted range its angle-error function keeps its value at the nearer end (a
+  /// polynomial would run away); the DH, marker and trend terms hold everywhere.
   [[nodiscard]] Eigen::Vector3d predict_m(const JointRef& q_rad) const;
   /// predict_m for each joint vector, one column each.
   [[nodiscard]] Points3 predict_m(const std::vector<JointVector>& q_rad) const;
