@@ -95,7 +95,7 @@ TEST_F(ReproduceCli, JsonShape) {
   for (const json& f : j["findings"]) {
     for (const char* key : {"id", "statement", "value", "met"}) EXPECT_TRUE(f.contains(key));
   }
-  EXPECT_NEAR(j["kuka"]["switched_points_fraction"].get<double>(), 0.168, 0.001);
+  EXPECT_NEAR(j["kuka"]["switched_points_fraction"].get<double>(), 0.164, 0.001);
   for (const char* data : {"A1", "A2"}) {
     for (const char* key :
          {"sigma_opt_mm", "sigma_l_mm", "sigma_noise_mm", "rho", "unc_rms_t_mm", "cor_rms_t_mm",

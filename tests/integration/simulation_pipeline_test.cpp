@@ -71,9 +71,9 @@ TEST(SimulationPipeline, HeaderStatesTestbedDatasetSeedAndEveryParameter) {
       simulation::simulate_dataset(testbed, Dataset::kGrid, {17, {}});
   const std::string text = csv_text(data);
   for (const char* fragment :
-       {"test bed lwr4, dataset grid, seed 17", "joint offset sigma 0.3 deg",
+       {"test bed lwr4, dataset grid, seed 17", "joint offset sigma 0.25 deg",
         "link length (a) sigma", "link offset (d) sigma", "twist (alpha) sigma", "A_arcmin [0.75",
-        "P_deg [20, 18, 24", "repeatability sigma 0.03 mm", "compliance under gravity off",
+        "P_deg [20, 18, 24", "repeatability sigma 0.03 mm", "compliance under gravity on",
         "1.8 m from the volume centre", "[0.058, 0.058, 0.058] mm", "K = 1 readings",
         "joint 7: dtheta", "T_robot_sensor"}) {
     EXPECT_NE(text.find(fragment), std::string::npos) << fragment;

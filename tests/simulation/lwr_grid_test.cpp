@@ -1,6 +1,7 @@
 // The KUKA LWR 4+ grid: serpentine path of unit steps, four configurations per location in the
 // analytic IK's order (which changes over part of the volume, never at random), joints recorded.
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "simulation_test_support.hpp"
@@ -81,7 +82,8 @@ TEST_F(LwrGridData, FourConfigurationsPerLocationOneReadingEach) {
 }
 
 TEST_F(LwrGridData, EnumerationOrderChangesOverPartOfTheVolumeOnly) {
-  // The order of global configurations the IK lists, compared with the first location's.
+  // The order of global configurations the IK lists, compared with the most common one (the
+  // first location may lie in a changed region: it does from the test bed's home posture).
   const Testbed testbed = lwr4_testbed();
   const SimulatedDataset& data = *data_;
   const auto order_at = [&](std::size_t p) {
@@ -92,11 +94,16 @@ TEST_F(LwrGridData, EnumerationOrderChangesOverPartOfTheVolumeOnly) {
     }
     return order;
   };
-  const std::vector<int> first = order_at(0);
+  std::map<std::vector<int>, int> count;
+  for (std::size_t p = 0; p < data.locations.size(); ++p) ++count[order_at(p)];
+  const std::vector<int> usual =
+      std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) {
+        return a.second < b.second;
+      })->first;
   int changed = 0;
   int changes_along_path = 0;
   for (std::size_t p = 0; p < data.locations.size(); ++p) {
-    changed += order_at(p) != first ? 1 : 0;
+    changed += order_at(p) != usual ? 1 : 0;
     if (p > 0 && order_at(p) != order_at(p - 1)) ++changes_along_path;
   }
   const double fraction = static_cast<double>(changed) / static_cast<double>(data.locations.size());
@@ -109,7 +116,7 @@ TEST_F(LwrGridData, EnumerationOrderChangesOverPartOfTheVolumeOnly) {
   const std::vector<Eigen::Vector3i> nodes = serpentine_order(13, 11, 11);
   std::vector<int> state(13 * 11 * 11, 0);  // 1 = changed, 2 = changed and visited
   const auto at = [](const Eigen::Vector3i& n) { return n.x() + 13 * (n.y() + 11 * n.z()); };
-  for (std::size_t p = 0; p < nodes.size(); ++p) state[at(nodes[p])] = order_at(p) != first ? 1 : 0;
+  for (std::size_t p = 0; p < nodes.size(); ++p) state[at(nodes[p])] = order_at(p) != usual ? 1 : 0;
   int regions = 0;
   for (int start = 0; start < static_cast<int>(state.size()); ++start) {
     if (state[start] != 1) continue;
@@ -134,7 +141,7 @@ TEST_F(LwrGridData, EnumerationOrderChangesOverPartOfTheVolumeOnly) {
   }
   EXPECT_LE(regions, 3);
   // The last label is always the same configuration (as in the paper: no switch in config 4).
-  for (std::size_t p = 0; p < data.locations.size(); ++p) ASSERT_EQ(order_at(p)[3], first[3]);
+  for (std::size_t p = 0; p < data.locations.size(); ++p) ASSERT_EQ(order_at(p)[3], usual[3]);
 }
 
 TEST(AikOrder, SortsByDistanceToHome) {

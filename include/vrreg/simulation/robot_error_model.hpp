@@ -29,8 +29,8 @@ struct RobotErrorModel {
   /// Repeatability: TCP displacement drawn once per visit, Gaussian per axis of the base frame
   /// [m]. Not averaged away by repeat readings of one visit.
   double repeatability_sigma_m = 0.0;
-  /// Joint deflection under gravity, dq_i = tau_i / k_i (off by default: the paper's robots ran
-  /// with high stiffness, and a smooth error like this one is removed by RRBC anyway).
+  /// Joint deflection under gravity, dq_i = tau_i / k_i (off unless a test bed turns it on: the
+  /// KUKA's does, the UR5's does not; a smooth error like this one is removed by RRBC).
   bool compliance = false;
   /// Mass of link i [kg], lumped halfway between the origins of DH frames i-1 and i.
   std::vector<double> link_mass_kg;
