@@ -86,7 +86,8 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
         "  not correctable               %d targets (outside the fiducials; left uncorrected)\n",
         c.n_flagged);
   }
-  std::printf("                                uncorrected  corrected (RRBC)\n");
+  std::printf("                                uncorrected  corrected (%s)\n",
+              is_field_model(c.method_used) ? to_string(c.method_used) : "RRBC");
   std::printf("  RMS_T                         %8s mm  %8s mm\n", format_mm(s.unc_rms_t_m).c_str(),
               format_mm(s.cor_rms_t_m).c_str());
   std::printf("  max TRE                       %8s mm  %8s mm\n",

@@ -32,7 +32,8 @@ std::vector<int> assign_folds(Eigen::Index n, int folds, std::uint64_t seed) {
 }
 
 CrossValidationRow cross_validate(InterpolationMethod method, const FieldData& data,
-                                  const std::vector<int>& fold_of, int folds) {
+                                  const std::vector<int>& fold_of, int folds,
+                                  std::unique_ptr<FieldModel>* full) {
   CrossValidationRow row;
   row.method = method;
   row.note = field_model_unavailable(method, data);
@@ -41,13 +42,14 @@ CrossValidationRow cross_validate(InterpolationMethod method, const FieldData& d
   Eigen::Vector3d sum_sq = Eigen::Vector3d::Zero();
   row.squared_error_m2.setConstant(data.size(), std::numeric_limits<double>::quiet_NaN());
   try {
+    std::unique_ptr<FieldModel> model_all = fit_field_model(method, data);
     for (int f = 0; f < folds; ++f) {
       std::vector<Eigen::Index> train;
       std::vector<Eigen::Index> test;
       for (Eigen::Index j = 0; j < data.size(); ++j)
         (fold_of[static_cast<std::size_t>(j)] == f ? test : train).push_back(j);
       if (test.empty()) continue;
-      const auto model = fit_field_model(method, data.subset(train));
+      const auto model = model_all->refit(data.subset(train));
       const FieldData held_out = data.subset(test);
       const FieldPredictions p =
           model->predict(FieldQuery{held_out.registered_robot_m, held_out.joints_rad});
@@ -61,6 +63,7 @@ CrossValidationRow cross_validate(InterpolationMethod method, const FieldData& d
         ++row.n_predicted;
       }
     }
+    if (full != nullptr) *full = std::move(model_all);
   } catch (const InputError& e) {
     row.note = e.what();
     return row;
@@ -82,7 +85,8 @@ std::vector<InterpolationMethod> auto_candidates() {
           InterpolationMethod::kRbf, InterpolationMethod::kKriging, InterpolationMethod::kJoint};
 }
 
-CrossValidation choose_by_cross_validation(const FieldData& data, int folds, std::uint64_t seed) {
+CrossValidation choose_by_cross_validation(const FieldData& data, int folds, std::uint64_t seed,
+                                           std::unique_ptr<FieldModel>* chosen_model) {
   VRREG_THROW_UNLESS(folds >= 2 && data.size() >= 2 * folds,
                      folds << "-fold cross-validation needs at least " << 2 * folds
                            << " fiducials, got " << data.size());
@@ -90,8 +94,10 @@ CrossValidation choose_by_cross_validation(const FieldData& data, int folds, std
   out.folds = folds;
   out.seed = seed;
   const std::vector<int> fold_of = assign_folds(data.size(), folds, seed);
+  std::vector<std::unique_ptr<FieldModel>> fitted;
   for (const InterpolationMethod m : auto_candidates()) {
-    out.rows.push_back(cross_validate(m, data, fold_of, folds));
+    fitted.emplace_back();
+    out.rows.push_back(cross_validate(m, data, fold_of, folds, &fitted.back()));
   }
   std::vector<char> common(static_cast<std::size_t>(data.size()), 1);
   for (const CrossValidationRow& row : out.rows) {
@@ -114,6 +120,9 @@ CrossValidation choose_by_cross_validation(const FieldData& data, int folds, std
   VRREG_THROW_UNLESS(best != nullptr,
                      "no interpolation method could be cross-validated on these fiducials");
   out.chosen = best->method;
+  if (chosen_model != nullptr) {
+    *chosen_model = std::move(fitted[static_cast<std::size_t>(best - out.rows.data())]);
+  }
   return out;
 }
 

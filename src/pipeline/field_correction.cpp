@@ -1,5 +1,6 @@
 #include "field_correction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -34,9 +35,16 @@ FieldData field_data(const RegistrationModel& model,
     }
   }
   data.robot = robot;
+  // The noise of one fiducial's correction per axis: its averaged sensor reading (sigma_opt per
+  // reading over sqrt n) and the robot's repeatability (Eq. 9 counts one reading).
   const std::optional<double> opt = sigma_opt_m(model.fiducials);
   if (opt || model.sigma_rep_m) {
-    data.noise_sd_m = sigma_noise_m(opt.value_or(0.0), model.sigma_rep_m.value_or(0.0));
+    std::vector<int> readings;
+    for (const Location& f : model.fiducials) readings.push_back(std::max(f.n_readings, 1));
+    std::nth_element(readings.begin(), readings.begin() + readings.size() / 2, readings.end());
+    const double per_fiducial_opt_m =
+        opt.value_or(0.0) / std::sqrt(static_cast<double>(readings[readings.size() / 2]));
+    data.noise_sd_m = sigma_noise_m(per_fiducial_opt_m, model.sigma_rep_m.value_or(0.0));
   }
   return data;
 }
@@ -46,26 +54,26 @@ FittedField fit_field(InterpolationMethod method, const FieldData& data) {
   const int folds = 5;
   const std::uint64_t seed = 1;
   if (method == InterpolationMethod::kAuto) {
-    out.cross_validation = choose_by_cross_validation(data, folds, seed);
+    out.cross_validation = choose_by_cross_validation(data, folds, seed, &out.model);
     out.method = out.cross_validation->chosen;
     for (const CrossValidationRow& row : out.cross_validation->rows) {
       if (row.method == out.method) out.cv_rms_m = row.rms_m;
     }
-  } else {
-    VRREG_THROW_UNLESS(is_field_model(method), to_string(method) << " is not a field model");
-    out.method = method;
+    return out;
   }
-  out.model = fit_field_model(out.method, data);
-  if (!out.cross_validation && method != InterpolationMethod::kKriging) {
-    // The model's own uncertainty is its cross-validated error (kriging has a posterior).
-    const CrossValidationRow row =
-        cross_validate(out.method, data, assign_folds(data.size(), folds, seed), folds);
-    VRREG_THROW_UNLESS(row.applicable, to_string(out.method)
-                                           << " interpolation cannot be cross-validated on these "
-                                              "fiducials: "
-                                           << row.note);
-    out.cv_rms_m = row.rms_m;
+  VRREG_THROW_UNLESS(is_field_model(method), to_string(method) << " is not a field model");
+  out.method = method;
+  if (method == InterpolationMethod::kKriging) {  // its own posterior sd: no CV needed
+    out.model = fit_field_model(method, data);
+    return out;
   }
+  // The model's own uncertainty is its cross-validated error.
+  const CrossValidationRow row =
+      cross_validate(method, data, assign_folds(data.size(), folds, seed), folds, &out.model);
+  VRREG_THROW_UNLESS(row.applicable && out.model,
+                     to_string(method) << " interpolation cannot be used on these fiducials: "
+                                       << row.note);
+  out.cv_rms_m = row.rms_m;
   return out;
 }
 

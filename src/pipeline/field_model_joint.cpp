@@ -18,10 +18,19 @@ std::vector<kinematics::JointVector> joint_columns(const Eigen::MatrixXd& joints
   return out;
 }
 
+std::unique_ptr<FieldModel> fit_joint(const FieldData& data,
+                                      const kinematics::JointErrorModelOptions& options);
+
 class JointFieldModel final : public FieldModel {
  public:
   JointFieldModel(kinematics::JointErrorModel model, const SimilarityTransform& T)
       : model_(std::move(model)), T_robot_sensor_(T) {}
+
+  [[nodiscard]] std::unique_ptr<FieldModel> refit(const FieldData& subset) const override {
+    kinematics::JointErrorModelOptions options;
+    options.joint_degrees = model_.joint_degrees();
+    return fit_joint(subset, options);
+  }
 
   [[nodiscard]] FieldPredictions predict(const FieldQuery& query) const override {
     const Eigen::Index n = query.registered_robot_m.cols();
@@ -33,6 +42,9 @@ class JointFieldModel final : public FieldModel {
         -(T_robot_sensor_.rotation.transpose() * e_robot_m) / T_robot_sensor_.scale;
     out.ok.assign(static_cast<std::size_t>(n), 1);
     return out;
+  }
+  [[nodiscard]] InterpolationMethod method() const override {
+    return InterpolationMethod::kJoint;
   }
   [[nodiscard]] std::string describe() const override {
     std::ostringstream out;
@@ -48,16 +60,22 @@ class JointFieldModel final : public FieldModel {
   SimilarityTransform T_robot_sensor_;
 };
 
-}  // namespace
-
-std::unique_ptr<FieldModel> fit_joint_model(const FieldData& data) {
+std::unique_ptr<FieldModel> fit_joint(const FieldData& data,
+                                      const kinematics::JointErrorModelOptions& options) {
   VRREG_THROW_UNLESS(data.robot && data.joints_rad.rows() == data.robot->n_joints(),
                      "joint interpolation needs the fiducials' joint angles and the robot");
   // The errors the arm made, as the registration sees them: y_observed - y_nominal.
   const Points3 error_robot_m = data.registered_robot_m - data.fiducials_robot_m;
   return std::make_unique<JointFieldModel>(
-      kinematics::JointErrorModel::fit(*data.robot, joint_columns(data.joints_rad), error_robot_m),
+      kinematics::JointErrorModel::fit(*data.robot, joint_columns(data.joints_rad), error_robot_m,
+                                       options),
       data.T_robot_sensor);
+}
+
+}  // namespace
+
+std::unique_ptr<FieldModel> fit_joint_model(const FieldData& data) {
+  return fit_joint(data, kinematics::JointErrorModelOptions{});
 }
 
 }  // namespace vrreg::pipeline_detail

@@ -1,6 +1,8 @@
 // The kriging field model (correction/kriging.hpp) behind the FieldModel interface: fitted on
 // the fiducials' nominal robot positions, asked at registered positions; a corrected target's
 // sd is the posterior sd of the field plus its own noise (the nugget), in quadrature.
+#include <array>
+#include <cmath>
 #include <memory>
 
 #include "field_models.hpp"
@@ -11,7 +13,17 @@ namespace {
 
 class KrigingFieldModel final : public FieldModel {
  public:
-  explicit KrigingFieldModel(KrigingModel model) : model_(std::move(model)) {}
+  KrigingFieldModel(KrigingModel model, KrigingOptions options)
+      : model_(std::move(model)), options_(std::move(options)) {}
+
+  [[nodiscard]] std::unique_ptr<FieldModel> refit(const FieldData& subset) const override {
+    std::array<KrigingHyperparameters, 3> h;
+    for (std::size_t a = 0; a < 3; ++a) h[a] = model_.axes()[a].hyperparameters;
+    return std::make_unique<KrigingFieldModel>(
+        KrigingModel::with_hyperparameters(subset.fiducials_robot_m, subset.corrections_sensor_m,
+                                           h, options_),
+        options_);
+  }
 
   [[nodiscard]] FieldPredictions predict(const FieldQuery& query) const override {
     const FieldPrediction p = model_.predict(query.registered_robot_m);
@@ -25,10 +37,14 @@ class KrigingFieldModel final : public FieldModel {
       out.sd_m(i) = std::sqrt((p.sd_m.col(i).cwiseAbs2() + nugget_var).sum());
     return out;
   }
+  [[nodiscard]] InterpolationMethod method() const override {
+    return InterpolationMethod::kKriging;
+  }
   [[nodiscard]] std::string describe() const override { return model_.describe(); }
 
  private:
   KrigingModel model_;
+  KrigingOptions options_;
 };
 
 }  // namespace
@@ -39,7 +55,7 @@ std::unique_ptr<FieldModel> fit_kriging_model(const FieldData& data) {
   // promise more than the measurements hold.
   options.noise_sd_m = data.noise_sd_m;
   return std::make_unique<KrigingFieldModel>(
-      KrigingModel::fit(data.fiducials_robot_m, data.corrections_sensor_m, options));
+      KrigingModel::fit(data.fiducials_robot_m, data.corrections_sensor_m, options), options);
 }
 
 }  // namespace vrreg::pipeline_detail

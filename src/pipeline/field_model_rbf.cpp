@@ -18,6 +18,9 @@ class RbfFieldModel final : public FieldModel {
     out.ok.assign(static_cast<std::size_t>(query.registered_robot_m.cols()), 1);
     return out;
   }
+  [[nodiscard]] InterpolationMethod method() const override {
+    return InterpolationMethod::kRbf;
+  }
   [[nodiscard]] std::string describe() const override { return model_.describe(); }
 
  private:

@@ -22,6 +22,9 @@ class ScatteredModel final : public FieldModel {
           return interpolate_correction(s, corrections_sensor_m_);
         });
   }
+  [[nodiscard]] InterpolationMethod method() const override {
+    return InterpolationMethod::kScattered;
+  }
   [[nodiscard]] std::string describe() const override { return stencils_.describe(); }
 
  private:

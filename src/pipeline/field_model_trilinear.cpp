@@ -18,6 +18,9 @@ class TrilinearModel final : public FieldModel {
       return lattice_correction(lattice_, query.registered_robot_m.col(i), tolerance_m_);
     });
   }
+  [[nodiscard]] InterpolationMethod method() const override {
+    return InterpolationMethod::kTrilinear;
+  }
   [[nodiscard]] std::string describe() const override {
     return "trilinear, " + lattice_.describe();
   }

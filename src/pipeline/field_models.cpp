@@ -26,6 +26,10 @@ FieldData FieldData::subset(const std::vector<Eigen::Index>& keep) const {
   return out;
 }
 
+std::unique_ptr<FieldModel> FieldModel::refit(const FieldData& subset) const {
+  return fit_field_model(method(), subset);
+}
+
 std::string field_model_unavailable(InterpolationMethod method, const FieldData& data) {
   if (method == InterpolationMethod::kJoint) {
     if (data.joints_rad.size() == 0) return "the fiducials have no joint angles";

@@ -63,8 +63,14 @@ class FieldModel {
  public:
   virtual ~FieldModel() = default;
   [[nodiscard]] virtual FieldPredictions predict(const FieldQuery& query) const = 0;
+  [[nodiscard]] virtual InterpolationMethod method() const = 0;
   /// E.g. "kriging, Matérn 5/2 + quadratic trend, 1167 fiducials (exact)".
   [[nodiscard]] virtual std::string describe() const = 0;
+  /// The same model on a subset of the fiducials (a cross-validation fold). Models whose
+  /// settings are themselves fitted (kriging's hyperparameters, the joint model's degrees) keep
+  /// this model's, so a fold costs a solve, not a search; the CV error is then slightly
+  /// optimistic (docs/field-models.md). Default: fitted afresh.
+  [[nodiscard]] virtual std::unique_ptr<FieldModel> refit(const FieldData& subset) const;
 };
 
 /// Why `method` cannot be fitted on `data` (no joints, no robot, not a lattice, too few
