@@ -51,7 +51,8 @@ Stencil grid_stencil(const GridLayout& grid, const Eigen::Vector3d& point_robot_
           .fiducial = {}, .weight = {}, .size = 0, .status = StencilStatus::kOutsideGrid};
     }
     const double clamped = std::clamp(t, 0.0, last);
-    cell[a] = std::min(static_cast<int>(std::floor(clamped)), grid.nodes[a] - 2);
+    // clamped >= 0, so truncation is floor (without SSE4.1 std::floor is a library call).
+    cell[a] = std::min(static_cast<int>(clamped), grid.nodes[a] - 2);
     fraction[a] = clamped - cell[a];
   }
   Stencil out;
