@@ -7,12 +7,14 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <optional>
 
+#include "grid_stencil.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/correction/grid.hpp"
 #include "vrreg/correction/octuplet.hpp"
@@ -156,15 +158,17 @@ TargetCorrection correct_targets(const CorrectionField& field,
   allocate(out.corrected_sensor_m, n);
   allocate(out.corrected_robot_m, n);
   allocate(out.uncorrected_robot_m, n);
+  const std::array<double, 3> grid_slack =
+      grid ? detail::grid_slack(*grid, tolerance_m) : std::array<double, 3>{};
   std::atomic<int> n_flagged{0};
   const auto correct_range = [&](Eigen::Index begin, Eigen::Index end) {
     int flagged = 0;
     for (Eigen::Index i = begin; i < end; ++i) {
       const Eigen::Vector3d target_sensor_m = targets_sensor_m.col(i);
       const Eigen::Vector3d registered_robot_m = T_robot_sensor.apply(target_sensor_m);
-      Stencil stencil;
+      Stencil& stencil = out.stencils[static_cast<std::size_t>(i)];  // written in place
       if (grid) {
-        stencil = grid_stencil(*grid, registered_robot_m, tolerance_m);
+        detail::grid_stencil_into(*grid, registered_robot_m, grid_slack, stencil);
       } else if (octuplet) {
         stencil = octuplet->stencil(
             targets_robot_nominal_m.col(i),
@@ -186,7 +190,6 @@ TargetCorrection correct_targets(const CorrectionField& field,
         out.corrected_sensor_m.col(i) = target_sensor_m;
         out.corrected_robot_m.col(i) = registered_robot_m;
       }
-      out.stencils[static_cast<std::size_t>(i)] = stencil;
     }
     n_flagged.fetch_add(flagged, std::memory_order_relaxed);
   };
