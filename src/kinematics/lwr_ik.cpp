@@ -33,12 +33,13 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
                    ((base.singular & kElbowSingular) != 0 ? 2 : 0) |
                    ((base.singular & kWristSingular) != 0 ? 1 : 0);
   result.solutions.reserve(8);
+  double flipped[8][7];
+  detail::lwr_flips(base.theta, flipped);
   int n_branches = 0;
   for (int index = 0; index < 8; ++index) {
     if ((index & skip) != 0) continue;
     ++n_branches;
-    double theta[7];
-    detail::lwr_flip(base.theta, index, theta);
+    const double* const theta = flipped[index];
     // Filled in place (no copy of the solution); taken back when a joint misses its limits.
     IkSolution& solution = result.solutions.emplace_back();
     JointVector& q = solution.q_rad;
