@@ -40,8 +40,9 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
     if ((index & skip) != 0) continue;
     ++n_branches;
     const double* const theta = flipped[index];
-    // Filled in place (no copy of the solution); taken back when a joint misses its limits.
-    IkSolution& solution = result.solutions.emplace_back();
+    // Default-initialised, then appended: emplace_back() would value-initialise it (zeroing all
+    // of its fixed-size joint storage with a `rep stos`, a sixth of the call).
+    IkSolution solution;
     JointVector& q = solution.q_rad;
     q.resize(7);
     bool inside = true;
@@ -52,12 +53,12 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
       }
     }
     if (!inside) {
-      result.solutions.pop_back();
       ++result.n_outside_limits;
       continue;
     }
     solution.config = ConfigurationLabel(ArmKind::kLwr, index);
     solution.singular = base.singular;
+    result.solutions.push_back(solution);
   }
   if (result.solutions.empty()) {
     result.status = IkStatus::kOutsideLimits;
