@@ -15,8 +15,8 @@ namespace {
 
 TEST(LwrFlips, SameBitsAsOneConfigurationAtATime) {
   constexpr double pi = std::numbers::pi;
-  std::vector<double> values = {0.0,    -0.0,    pi,  -pi,  pi / 2,    -pi / 2,    1e-300,
-                                -1e-300, 3.0,     -3.0, 2 * pi, -2 * pi, 3.1415926, -3.1415926};
+  std::vector<double> values = {0.0,     -0.0, pi,   -pi,    pi / 2,  -pi / 2,   1e-300,
+                                -1e-300, 3.0,  -3.0, 2 * pi, -2 * pi, 3.1415926, -3.1415926};
   Random rng(7);
   for (int k = 0; k < 2000; ++k) values.push_back(rng.uniform(-3.5 * pi, 3.5 * pi));
   for (std::size_t k = 0; k + 7 <= values.size(); ++k) {
@@ -30,8 +30,7 @@ TEST(LwrFlips, SameBitsAsOneConfigurationAtATime) {
       double one[7];
       detail::lwr_flip(base, index, one);
       for (int i = 0; i < 7; ++i) {
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(all[index][i]),
-                  std::bit_cast<std::uint64_t>(one[i]))
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(all[index][i]), std::bit_cast<std::uint64_t>(one[i]))
             << "joint " << i << " of configuration " << index << " from " << base[i];
       }
     }
