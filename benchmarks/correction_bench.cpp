@@ -3,9 +3,11 @@
 // fiducials (kd-tree) with inverse-distance weights. Interpolator build times are separate.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <nanoflann.hpp>
+#include <vector>
 
 #include "vrreg/core/random.hpp"
 #include "vrreg/correction/correct_targets.hpp"
@@ -243,7 +245,10 @@ BENCHMARK(BM_correct_targets_grid)
     ->Arg(1)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->UseRealTime()
+    ->ComputeStatistics("min", [](const std::vector<double>& v) {  // least disturbed run
+      return *std::min_element(v.begin(), v.end());
+    });
 BENCHMARK(BM_correct_targets_scattered)
     ->Arg(0)
     ->Arg(1)

@@ -2,7 +2,9 @@
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "vrreg/core/random.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
@@ -90,6 +92,10 @@ void BM_naive_sigma_l(benchmark::State& state) {
   }
 }
 
+// The fastest repetition: on the shared machine the least disturbed run is the best estimate of
+// the wall time on an idle one.
+double fastest(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+
 }  // namespace
 
 BENCHMARK(BM_vrreg_register_rigid)->Arg(8)->Arg(1000)->Arg(9600)->Arg(1000000);
@@ -100,5 +106,6 @@ BENCHMARK(BM_vrreg_sigma_l)
     ->Arg(10000)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->UseRealTime()
+    ->ComputeStatistics("min", fastest);
 BENCHMARK(BM_naive_sigma_l)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -7,11 +7,14 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <optional>
 
+#include "grid_stencil.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/correction/grid.hpp"
 #include "vrreg/correction/octuplet.hpp"
@@ -37,6 +40,19 @@ void advise_huge_pages(const void* data, std::size_t bytes) {
   (void)data;
   (void)bytes;
 #endif
+}
+
+// Faults a fresh buffer's pages in from both threads (the kernel zeroes each page on its first
+// touch), so that a serial pass over it, std::vector's value-initialisation, only writes memory.
+void fault_in_parallel(void* data, std::size_t bytes) {
+  constexpr std::size_t kPage = 4096;
+  constexpr std::size_t kPagesPerTask = 256;
+  if (bytes < 4 * kPagesPerTask * kPage) return;
+  auto* const bytes_begin = static_cast<unsigned char*>(data);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bytes, kPagesPerTask * kPage),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t b = r.begin(); b < r.end(); b += kPage) bytes_begin[b] = 0;
+                    });
 }
 
 // Sizes a 3 x n result without touching it (the parallel loop writes every entry first).
@@ -136,18 +152,23 @@ TargetCorrection correct_targets(const CorrectionField& field,
   const SimilarityTransform& T_robot_sensor = field.T_robot_sensor;
   out.stencils.reserve(static_cast<std::size_t>(n));
   advise_huge_pages(out.stencils.data(), static_cast<std::size_t>(n) * sizeof(Stencil));
+  fault_in_parallel(out.stencils.data(), static_cast<std::size_t>(n) * sizeof(Stencil));
   out.stencils.resize(static_cast<std::size_t>(n));
   allocate(out.corrections_sensor_m, n);
   allocate(out.corrected_sensor_m, n);
   allocate(out.corrected_robot_m, n);
   allocate(out.uncorrected_robot_m, n);
+  const std::array<double, 3> grid_slack =
+      grid ? detail::grid_slack(*grid, tolerance_m) : std::array<double, 3>{};
+  std::atomic<int> n_flagged{0};
   const auto correct_range = [&](Eigen::Index begin, Eigen::Index end) {
+    int flagged = 0;
     for (Eigen::Index i = begin; i < end; ++i) {
       const Eigen::Vector3d target_sensor_m = targets_sensor_m.col(i);
       const Eigen::Vector3d registered_robot_m = T_robot_sensor.apply(target_sensor_m);
-      Stencil stencil;
+      Stencil& stencil = out.stencils[static_cast<std::size_t>(i)];  // written in place
       if (grid) {
-        stencil = grid_stencil(*grid, registered_robot_m, tolerance_m);
+        detail::grid_stencil_into(*grid, registered_robot_m, grid_slack, stencil);
       } else if (octuplet) {
         stencil = octuplet->stencil(
             targets_robot_nominal_m.col(i),
@@ -164,12 +185,13 @@ TargetCorrection correct_targets(const CorrectionField& field,
         out.corrected_robot_m.col(i) =
             T_robot_sensor.apply(Eigen::Vector3d(target_sensor_m + correction_m));
       } else {
+        ++flagged;
         out.corrections_sensor_m.col(i).setZero();
         out.corrected_sensor_m.col(i) = target_sensor_m;
         out.corrected_robot_m.col(i) = registered_robot_m;
       }
-      out.stencils[static_cast<std::size_t>(i)] = stencil;
     }
+    n_flagged.fetch_add(flagged, std::memory_order_relaxed);
   };
   if (n < 2 * kParallelGrain) {
     correct_range(0, n);
@@ -179,9 +201,7 @@ TargetCorrection correct_targets(const CorrectionField& field,
                         correct_range(range.begin(), range.end());
                       });
   }
-  for (const Stencil& stencil : out.stencils) {
-    if (stencil.status != StencilStatus::kOk) ++out.n_flagged;
-  }
+  out.n_flagged = n_flagged.load();
   return out;
 }
 

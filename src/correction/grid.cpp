@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "grid_stencil.hpp"
 #include "vrreg/core/units.hpp"
 
 namespace vrreg {
@@ -37,25 +38,33 @@ std::string GridLayout::describe() const {
   return out.str();
 }
 
-Stencil grid_stencil(const GridLayout& grid, const Eigen::Vector3d& point_robot_m,
-                     double tolerance_m) {
+namespace detail {
+
+std::array<double, 3> grid_slack(const GridLayout& grid, double tolerance_m) {
+  return {tolerance_m / grid.spacing_m.x(), tolerance_m / grid.spacing_m.y(),
+          tolerance_m / grid.spacing_m.z()};
+}
+
+void grid_stencil_into(const GridLayout& grid, const Eigen::Vector3d& point_robot_m,
+                       const std::array<double, 3>& slack, Stencil& out) {
   std::array<int, 3> cell{};
   std::array<double, 3> fraction{};
   for (int axis = 0; axis < 3; ++axis) {
     const auto a = static_cast<std::size_t>(axis);
     const double last = grid.nodes[a] - 1;
     const double t = (point_robot_m(axis) - grid.origin_m(axis)) / grid.spacing_m(axis);
-    const double slack = tolerance_m / grid.spacing_m(axis);
-    if (!(t >= -slack && t <= last + slack)) {  // also catches NaN
-      return Stencil{
+    if (!(t >= -slack[a] && t <= last + slack[a])) {  // also catches NaN
+      out = Stencil{
           .fiducial = {}, .weight = {}, .size = 0, .status = StencilStatus::kOutsideGrid};
+      return;
     }
     const double clamped = std::clamp(t, 0.0, last);
-    cell[a] = std::min(static_cast<int>(std::floor(clamped)), grid.nodes[a] - 2);
+    // clamped >= 0, so truncation is floor (without SSE4.1 std::floor is a library call).
+    cell[a] = std::min(static_cast<int>(clamped), grid.nodes[a] - 2);
     fraction[a] = clamped - cell[a];
   }
-  Stencil out;
   out.size = 8;
+  out.status = StencilStatus::kOk;
   for (std::size_t corner = 0; corner < 8; ++corner) {
     const int bx = static_cast<int>(corner & 1U);
     const int by = static_cast<int>((corner >> 1U) & 1U);
@@ -65,6 +74,14 @@ Stencil grid_stencil(const GridLayout& grid, const Eigen::Vector3d& point_robot_
                          (by != 0 ? fraction[1] : 1.0 - fraction[1]) *
                          (bz != 0 ? fraction[2] : 1.0 - fraction[2]);
   }
+}
+
+}  // namespace detail
+
+Stencil grid_stencil(const GridLayout& grid, const Eigen::Vector3d& point_robot_m,
+                     double tolerance_m) {
+  Stencil out;
+  detail::grid_stencil_into(grid, point_robot_m, detail::grid_slack(grid, tolerance_m), out);
   return out;
 }
 

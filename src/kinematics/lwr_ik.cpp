@@ -33,14 +33,16 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
                    ((base.singular & kElbowSingular) != 0 ? 2 : 0) |
                    ((base.singular & kWristSingular) != 0 ? 1 : 0);
   result.solutions.reserve(8);
+  double flipped[8][7];
+  detail::lwr_flips(base.theta, flipped);
   int n_branches = 0;
   for (int index = 0; index < 8; ++index) {
     if ((index & skip) != 0) continue;
     ++n_branches;
-    double theta[7];
-    detail::lwr_flip(base.theta, index, theta);
-    // Filled in place (no copy of the solution); taken back when a joint misses its limits.
-    IkSolution& solution = result.solutions.emplace_back();
+    const double* const theta = flipped[index];
+    // Default-initialised, then appended: emplace_back() would value-initialise it (zeroing all
+    // of its fixed-size joint storage with a `rep stos`, a sixth of the call).
+    IkSolution solution;
     JointVector& q = solution.q_rad;
     q.resize(7);
     bool inside = true;
@@ -51,12 +53,12 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
       }
     }
     if (!inside) {
-      result.solutions.pop_back();
       ++result.n_outside_limits;
       continue;
     }
     solution.config = ConfigurationLabel(ArmKind::kLwr, index);
     solution.singular = base.singular;
+    result.solutions.push_back(solution);
   }
   if (result.solutions.empty()) {
     result.status = IkStatus::kOutsideLimits;

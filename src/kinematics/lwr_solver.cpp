@@ -172,4 +172,26 @@ void lwr_flip(const double base[7], int index, double out[7]) {
   for (int i = 0; i < 7; ++i) out[i] = wrap_angle(out[i]);
 }
 
+void lwr_flips(const double base[7], double out[8][7]) {
+  const double t0[2] = {wrap_angle(base[0]), wrap_angle(base[0] + kPi)};
+  const double t1[2] = {wrap_angle(base[1]), wrap_angle(-base[1])};
+  const double t2[3] = {wrap_angle(base[2]), wrap_angle(base[2] + kPi),
+                        wrap_angle((base[2] + kPi) + kPi)};
+  const double t3[2] = {wrap_angle(base[3]), wrap_angle(-base[3])};
+  const double t4[3] = {wrap_angle(base[4]), wrap_angle(base[4] + kPi),
+                        wrap_angle((base[4] + kPi) + kPi)};
+  const double t5[2] = {wrap_angle(base[5]), wrap_angle(-base[5])};
+  const double t6[2] = {wrap_angle(base[6]), wrap_angle(base[6] + kPi)};
+  for (int index = 0; index < 8; ++index) {
+    const int shoulder = (index >> 2) & 1, elbow = (index >> 1) & 1, wrist = index & 1;
+    out[index][0] = t0[shoulder];
+    out[index][1] = t1[shoulder];
+    out[index][2] = t2[shoulder + elbow];
+    out[index][3] = t3[elbow];
+    out[index][4] = t4[elbow + wrist];
+    out[index][5] = t5[wrist];
+    out[index][6] = t6[wrist];
+  }
+}
+
 }  // namespace vrreg::kinematics::detail

@@ -53,4 +53,8 @@ LwrBaseSolution lwr_base_solution(const LwrPoseFrame& frame, double psi_rad,
 /// from the base configuration by the flips of design.md section 4, wrapped to (-pi, pi].
 void lwr_flip(const double base[7], int index, double out[7]);
 
+/// lwr_flip for all eight indices at once (out[index]), with the same bits: each joint takes one
+/// of at most three values (as is, flipped once, flipped twice), each wrapped once.
+void lwr_flips(const double base[7], double out[8][7]);
+
 }  // namespace vrreg::kinematics::detail

@@ -193,8 +193,9 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
   for (int index = 0; index < 8; ++index) {
     const Branch& b = branches[index];
     if (!b.present) continue;
-    // Filled in place (no copy of the solution); taken back when a joint misses its limits.
-    IkSolution& solution = result.solutions.emplace_back();
+    // Default-initialised, then appended: emplace_back() would value-initialise it (zeroing all
+    // of its fixed-size joint storage with a `rep stos`, a sixth of the call).
+    IkSolution solution;
     JointVector& q = solution.q_rad;
     q.resize(6);
     bool inside = true;
@@ -205,12 +206,12 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
       }
     }
     if (!inside) {
-      result.solutions.pop_back();
       ++result.n_outside_limits;
       continue;
     }
     solution.config = ConfigurationLabel(ArmKind::kUr, index);
     solution.singular = b.singular;
+    result.solutions.push_back(solution);
   }
   if (result.solutions.empty()) {
     result.status = IkStatus::kOutsideLimits;

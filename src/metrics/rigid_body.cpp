@@ -6,6 +6,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#endif
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -124,6 +128,105 @@ template <int kTarget>
                                             Sums& acc) {
   fold_rows<1>(d, b, e, acc);
 }
+
+constexpr std::size_t kLanes = 4;  // leaves folded side by side, one per AVX2 lane
+
+// Four leaves at once, leaf k in lane k: each lane's sums still run over its own pairs in
+// for_pairs' order (row by row, j ascending), so every leaf gets the bits it gets alone; the
+// lanes only share the instructions. Row step r takes row first_k + r of every leaf; the lanes
+// walk j together from the largest start, the few j before it (each lane's row starts at its own
+// i + 1) are added first, one lane at a time. A leaf with fewer rows idles in its last steps:
+// its lane computes a row whose sums are then dropped.
+[[gnu::target("avx2")]] void fold_leaves4_avx2(const PairData& d,
+                                               const std::pair<std::size_t, std::size_t>* leaf,
+                                               Sums* out) {
+  const std::size_t n = d.x[0].size();
+  const double* const x0 = d.x[0].data();
+  const double* const x1 = d.x[1].data();
+  const double* const x2 = d.x[2].data();
+  const double* const y0 = d.y[0].data();
+  const double* const y1 = d.y[1].data();
+  const double* const y2 = d.y[2].data();
+  alignas(32) double sum[kLanes], sum_sq[kLanes], lo[kLanes], hi[kLanes];
+  std::size_t steps = 0;
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    sum[k] = out[k].sum;
+    sum_sq[k] = out[k].sum_sq;
+    lo[k] = out[k].min;
+    hi[k] = out[k].max;
+    steps = std::max(steps, leaf[k].second - leaf[k].first);
+  }
+  for (std::size_t r = 0; r < steps; ++r) {
+    std::size_t row[kLanes];
+    bool active[kLanes];
+    std::size_t start = 0;  // where the lanes walk together
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      active[k] = leaf[k].first + r < leaf[k].second;
+      row[k] = active[k] ? leaf[k].first + r : leaf[k].first;
+      if (active[k]) start = std::max(start, row[k] + 1);
+    }
+    start = std::min(start, n);
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      if (!active[k]) continue;
+      const std::size_t i = row[k];
+      for (std::size_t j = i + 1; j < start; ++j) {
+        const double a0 = x0[j] - x0[i], a1 = x1[j] - x1[i], a2 = x2[j] - x2[i];
+        const double b0 = y0[j] - y0[i], b1 = y1[j] - y1[i], b2 = y2[j] - y2[i];
+        const double l =
+            std::sqrt(a0 * a0 + a1 * a1 + a2 * a2) - std::sqrt(b0 * b0 + b1 * b1 + b2 * b2);
+        sum[k] += l;
+        sum_sq[k] += l * l;
+        lo[k] = std::min(lo[k], l);
+        hi[k] = std::max(hi[k], l);
+      }
+      out[k].n += static_cast<std::int64_t>(n - i - 1);
+    }
+    if (start >= n) continue;
+    const __m256d xi0 = _mm256_set_pd(x0[row[3]], x0[row[2]], x0[row[1]], x0[row[0]]);
+    const __m256d xi1 = _mm256_set_pd(x1[row[3]], x1[row[2]], x1[row[1]], x1[row[0]]);
+    const __m256d xi2 = _mm256_set_pd(x2[row[3]], x2[row[2]], x2[row[1]], x2[row[0]]);
+    const __m256d yi0 = _mm256_set_pd(y0[row[3]], y0[row[2]], y0[row[1]], y0[row[0]]);
+    const __m256d yi1 = _mm256_set_pd(y1[row[3]], y1[row[2]], y1[row[1]], y1[row[0]]);
+    const __m256d yi2 = _mm256_set_pd(y2[row[3]], y2[row[2]], y2[row[1]], y2[row[0]]);
+    __m256d vsum = _mm256_load_pd(sum), vsq = _mm256_load_pd(sum_sq);
+    __m256d vlo = _mm256_load_pd(lo), vhi = _mm256_load_pd(hi);
+    for (std::size_t j = start; j < n; ++j) {
+      const __m256d a0 = _mm256_sub_pd(_mm256_broadcast_sd(x0 + j), xi0);
+      const __m256d a1 = _mm256_sub_pd(_mm256_broadcast_sd(x1 + j), xi1);
+      const __m256d a2 = _mm256_sub_pd(_mm256_broadcast_sd(x2 + j), xi2);
+      const __m256d b0 = _mm256_sub_pd(_mm256_broadcast_sd(y0 + j), yi0);
+      const __m256d b1 = _mm256_sub_pd(_mm256_broadcast_sd(y1 + j), yi1);
+      const __m256d b2 = _mm256_sub_pd(_mm256_broadcast_sd(y2 + j), yi2);
+      const __m256d aa = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a0, a0), _mm256_mul_pd(a1, a1)),
+                                       _mm256_mul_pd(a2, a2));
+      const __m256d bb = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(b0, b0), _mm256_mul_pd(b1, b1)),
+                                       _mm256_mul_pd(b2, b2));
+      const __m256d l = _mm256_sub_pd(_mm256_sqrt_pd(aa), _mm256_sqrt_pd(bb));
+      vsum = _mm256_add_pd(vsum, l);
+      vsq = _mm256_add_pd(vsq, _mm256_mul_pd(l, l));
+      vlo = _mm256_min_pd(vlo, l);
+      vhi = _mm256_max_pd(vhi, l);
+    }
+    alignas(32) double t_sum[kLanes], t_sq[kLanes], t_lo[kLanes], t_hi[kLanes];
+    _mm256_store_pd(t_sum, vsum);
+    _mm256_store_pd(t_sq, vsq);
+    _mm256_store_pd(t_lo, vlo);
+    _mm256_store_pd(t_hi, vhi);
+    for (std::size_t k = 0; k < kLanes; ++k) {
+      if (!active[k]) continue;  // an idle lane's row is dropped
+      sum[k] = t_sum[k];
+      sum_sq[k] = t_sq[k];
+      lo[k] = t_lo[k];
+      hi[k] = t_hi[k];
+    }
+  }
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    out[k].sum = sum[k];
+    out[k].sum_sq = sum_sq[k];
+    out[k].min = lo[k];
+    out[k].max = hi[k];
+  }
+}
 bool cpu_has_avx2() {
   static const bool has = __builtin_cpu_supports("avx2");
   return has;
@@ -135,6 +238,19 @@ void fold(const PairData& d, std::size_t b, std::size_t e, Sums& acc) {
   if (cpu_has_avx2()) return fold_rows_avx2(d, b, e, acc);
 #endif
   fold_rows<0>(d, b, e, acc);
+}
+
+// Leaves [first, last) of rows into leaf (each from zero sums): four at a time where AVX2 is.
+void fold_leaves(const PairData& d, const std::vector<std::pair<std::size_t, std::size_t>>& rows,
+                 std::size_t first, std::size_t last, std::vector<Sums>& leaf) {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  if (cpu_has_avx2()) {
+    for (; first + kLanes <= last; first += kLanes) {
+      fold_leaves4_avx2(d, rows.data() + first, leaf.data() + first);
+    }
+  }
+#endif
+  for (; first < last; ++first) fold(d, rows[first].first, rows[first].second, leaf[first]);
 }
 
 Sums combine(Sums a, const Sums& b) {
@@ -181,11 +297,13 @@ RigidBodyStatistics rigid_body_statistics(const ConstPoints3Ref& points_sensor_m
   // Leaves are independent; each one's sums start from zero, so the thread count cannot change
   // a bit. Fine tasks (one leaf each) balance the long early rows against the short late ones.
   std::vector<Sums> leaf(rows.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows.size(), 1),
+  // Groups of kGroup neighbouring leaves (similar lengths) per task.
+  constexpr std::size_t kGroup = 4;
+  const std::size_t groups = (rows.size() + kGroup - 1) / kGroup;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups, 1),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t k = r.begin(); k < r.end(); ++k) {
-                        fold(data, rows[k].first, rows[k].second, leaf[k]);
-                      }
+                      fold_leaves(data, rows, r.begin() * kGroup,
+                                  std::min(rows.size(), r.end() * kGroup), leaf);
                     });
   std::size_t next = 0;
   const Sums total = join_tree(0, n, leaf, next);
