@@ -1,11 +1,13 @@
 // The joint-space error model (kinematics/joint_error_model.hpp) behind the FieldModel
 // interface. It models e = y_observed - y_nominal in the robot frame as a function of the joints;
 // a corrected target is R X + tau - e(q), i.e. the sensor-frame correction -R' e / s.
+#include <algorithm>
 #include <memory>
 #include <sstream>
 
 #include "field_models.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/joint_error_model.hpp"
 
 namespace vrreg::pipeline_detail {
@@ -60,15 +62,44 @@ class JointFieldModel final : public FieldModel {
   SimilarityTransform T_robot_sensor_;
 };
 
+// Below this the fiducials' nominal positions are the robot's forward kinematics to one marker.
+constexpr double kNominalMismatchM = 1e-4;
+
+// Where the marker sits on the flange, from the fiducials' nominal positions Y_j = T_flange(q_j) p
+// (least squares: the mean of R_j' (Y_j - t_j)); so the robot needs no tool of its own. Throws when
+// the nominal positions are not this robot's kinematics (a wrong --robot).
+Eigen::Vector3d marker_on_flange_m(const FieldData& data) {
+  const kinematics::SerialChain flange = data.robot->with_tool(Eigen::Isometry3d::Identity());
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Isometry3d> poses;
+  for (Eigen::Index j = 0; j < data.size(); ++j) {
+    poses.push_back(kinematics::forward_kinematics(flange, data.joints_rad.col(j)));
+    sum += poses.back().linear().transpose() *
+           (data.fiducials_robot_m.col(j) - poses.back().translation());
+  }
+  const Eigen::Vector3d p_m = sum / static_cast<double>(data.size());
+  double worst_m = 0.0;
+  for (Eigen::Index j = 0; j < data.size(); ++j) {
+    worst_m = std::max(worst_m, (poses[static_cast<std::size_t>(j)] * p_m -
+                                 data.fiducials_robot_m.col(j)).norm());
+  }
+  VRREG_THROW_UNLESS(worst_m <= kNominalMismatchM,
+                     "the fiducials' robot positions are not " << data.robot->name()
+                         << "'s forward kinematics of their joints to one marker (off by up to "
+                         << worst_m * 1e3 << " mm): another --robot?");
+  return p_m;
+}
+
 std::unique_ptr<FieldModel> fit_joint(const FieldData& data,
                                       const kinematics::JointErrorModelOptions& options) {
   VRREG_THROW_UNLESS(data.robot && data.joints_rad.rows() == data.robot->n_joints(),
                      "joint interpolation needs the fiducials' joint angles and the robot");
+  const Eigen::Vector3d p_flange_marker_m = marker_on_flange_m(data);
   // The errors the arm made, as the registration sees them: y_observed - y_nominal.
   const Points3 error_robot_m = data.registered_robot_m - data.fiducials_robot_m;
   return std::make_unique<JointFieldModel>(
       kinematics::JointErrorModel::fit(*data.robot, joint_columns(data.joints_rad), error_robot_m,
-                                       options),
+                                       options, p_flange_marker_m),
       data.T_robot_sensor);
 }
 
