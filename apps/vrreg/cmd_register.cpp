@@ -102,8 +102,7 @@ void print_robust(const RobustReport& report) {
 void run_register_unchecked(const RegisterArgs& args) {
   const RegisterOptions options = register_options(args);
   options.validate();  // flag combinations before reading the file
-  args.marker_offset.check(options.interpolation.method == InterpolationMethod::kJoint ||
-                           options.interpolation.method == InterpolationMethod::kAuto);
+  args.marker_offset.check();
   if (args.marker_offset.enabled()) {  // hand-eye registration: its own report (marker_offset_cli)
     run_register_with_marker_offset(args.fiducials, args.marker_offset, options, args.output,
                                     args.json);

@@ -33,9 +33,9 @@ void MarkerOffsetFlags::add_to(CLI::App& command) {
       ->needs(flag)
       ->check(CLI::Range(0.0, 10.0));
   command.add_option("--robot", robot,
-                     "with --estimate-marker-offset or --marker-offset-mm: the robot whose joints "
-                     "the file gives (ur3, ur5, ur10, ur5e, lwr4 or a robot file; its tool is "
-                     "ignored)");
+                     "the robot whose joints the file gives (ur3, ur5, ur10, ur5e, lwr4 or a robot "
+                     "file; its tool is ignored): for --estimate-marker-offset and "
+                     "--marker-offset-mm, and stored in the model for --interpolation joint");
   command
       .add_option("--min-orientation-spread", min_orientation_spread,
                   "with --estimate-marker-offset: smallest RMS tilt [rad] for which the offset is "
@@ -45,10 +45,7 @@ void MarkerOffsetFlags::add_to(CLI::App& command) {
       ->capture_default_str();
 }
 
-void MarkerOffsetFlags::check(bool field_model) const {
-  VRREG_THROW_UNLESS(robot.empty() || enabled() || field_model,
-                     "--robot is for --estimate-marker-offset, --marker-offset-mm or "
-                     "--interpolation joint|auto");
+void MarkerOffsetFlags::check() const {
   VRREG_THROW_UNLESS(!enabled() || !robot.empty(),
                      (estimate ? "--estimate-marker-offset" : "--marker-offset-mm")
                          << " needs --robot (the robot the joints are for)");

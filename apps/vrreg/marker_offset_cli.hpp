@@ -18,8 +18,7 @@ struct MarkerOffsetFlags {
   double joint_offset_sigma_deg = 0.0;  ///< the robot's joint zero-offset uncertainty
   void add_to(CLI::App& command);
   /// Throws InputError on --robot without either mode.
-  /// field_model: the interpolation is joint or auto, which may use --robot without the offset.
-  void check(bool field_model = false) const;
+  void check() const;
   [[nodiscard]] bool enabled() const { return estimate || !known_mm.empty(); }
 };
 

@@ -74,6 +74,7 @@ FilledLattice fill_lattice(const ConstPoints3Ref& fiducials_robot_m,
         const std::int64_t key = lattice->key(i, j, k);
         if (lattice->node_fiducial.contains(key)) continue;
         std::vector<Eigen::Index> block;
+        std::vector<Eigen::Index> faces;  // the 6 nearest nodes
         for (int dk = -1; dk <= 1; ++dk) {
           for (int dj = -1; dj <= 1; ++dj) {
             for (int di = -1; di <= 1; ++di) {
@@ -84,14 +85,17 @@ FilledLattice fill_lattice(const ConstPoints3Ref& fiducials_robot_m,
                   c >= grid.nodes[2])
                 continue;
               const auto it = lattice->node_fiducial.find(lattice->key(a, b, c));
-              if (it != lattice->node_fiducial.end()) block.push_back(it->second);
+              if (it == lattice->node_fiducial.end()) continue;
+              block.push_back(it->second);
+              if (std::abs(di) + std::abs(dj) + std::abs(dk) == 1) faces.push_back(it->second);
             }
           }
         }
         const Eigen::Vector3d node_m =
             grid.origin_m + Eigen::Vector3d(i, j, k).cwiseProduct(grid.spacing_m);
-        const detail::LooStencil s =
-            detail::affine_stencil(fiducials_robot_m, node_m, std::move(block));
+        // The 6 face neighbours when all are there (nearest: least smoothing), else the block.
+        detail::LooStencil s = detail::affine_stencil(fiducials_robot_m, node_m, std::move(faces));
+        if (!s.ok) s = detail::affine_stencil(fiducials_robot_m, node_m, std::move(block));
         if (!s.ok) {
           ++out.n_empty;
           continue;
