@@ -2,10 +2,10 @@
 // results cut into tables per group of targets (the KUKA's configurations).
 #include <cmath>
 #include <exception>
-#include <limits>
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/experiments/beyond_paper.hpp"
+#include "vrreg/metrics/errors.hpp"
 #include "vrreg/metrics/uncertainty_calibration.hpp"
 #include "vrreg/pipeline/evaluate.hpp"
 #include "vrreg/pipeline/register_fiducials.hpp"
@@ -134,14 +134,9 @@ std::vector<BeyondTable> beyond_tables(const MeasurementSet& measured,
   }
   // The uncorrected errors depend on the registration only (Eq. 3), whichever method corrects.
   const std::vector<std::size_t> target_rows = measured.select(Role::kTarget);
-  const Points3 targets_sensor = measured.sensor_points(target_rows);
-  const Points3 targets_robot = measured.robot_points(target_rows);
-  Eigen::VectorXd unc_tre_m(targets_robot.cols());
-  for (Eigen::Index k = 0; k < unc_tre_m.size(); ++k) {
-    unc_tre_m(k) = (registered.model.T_robot_sensor.apply(Eigen::Vector3d(targets_sensor.col(k))) -
-                    targets_robot.col(k))
-                       .norm();
-  }
+  const Eigen::VectorXd unc_tre_m =
+      point_errors(registered.model.T_robot_sensor.apply_all(measured.sensor_points(target_rows)),
+                   measured.robot_points(target_rows));
 
   std::vector<BeyondTable> out;
   for (const TargetGroup& g : groups) {

@@ -154,3 +154,42 @@ TEST(BeyondPaper, NoiseFloorRejectsSetsThatDoNotMatch) {
 
 }  // namespace
 }  // namespace vrreg::experiments
+
+namespace vrreg::experiments {
+namespace {
+
+// The KUKA part end to end: one table per arm configuration, the paper's Strategies 2 and 3
+// first, a noise floor from the test bed's noise; the same seed gives the same cells.
+TEST(BeyondPaper, KukaTablesPerConfigurationAndSameSeedSameCells) {
+  BeyondOptions options;
+  options.seed = 2;
+  options.ur5 = false;
+  int steps = 0;
+  const std::vector<BeyondTable> tables = run_beyond_paper(options, [&steps] { ++steps; });
+  EXPECT_EQ(steps, beyond_steps(options));
+  ASSERT_EQ(tables.size(), 4U);
+  for (std::size_t m = 0; m < tables.size(); ++m) {
+    const BeyondTable& t = tables[m];
+    EXPECT_EQ(t.key, "kuka_" + std::to_string(m + 1));
+    ASSERT_EQ(t.rows.size(), 2 + beyond_field_methods().size());
+    EXPECT_EQ(t.rows[0].method, "strategy 2");
+    EXPECT_EQ(t.rows[1].method, "strategy 3");
+    EXPECT_TRUE(t.rows[1].ok);
+    EXPECT_GT(t.noise_floor_m, 0.0);
+    EXPECT_GT(t.rows[1].cor_rms_t_m, t.noise_floor_m);  // the targets' own noise stays
+  }
+  std::vector<Cell> first;
+  std::vector<Cell> again;
+  append_beyond_cells(tables, first);
+  append_beyond_cells(run_beyond_paper(options), again);
+  ASSERT_EQ(first.size(), again.size());
+  for (std::size_t k = 0; k < first.size(); ++k) {
+    EXPECT_EQ(first[k].pointer, again[k].pointer);
+    EXPECT_TRUE(first[k].value == again[k].value ||
+                (std::isnan(first[k].value) && std::isnan(again[k].value)))
+        << first[k].pointer;
+  }
+}
+
+}  // namespace
+}  // namespace vrreg::experiments
