@@ -99,7 +99,7 @@ std::string format_beyond_tables(const CellTable& cells,
       "noise floor (what a perfect correction of the systematic error would leave: the targets'\n"
       "own noise, from a noise-free re-simulation of the seed). TRE/sd = RMS of TRE / predicted\n"
       "sd (1 = honest); '2 sd %' = targets with TRE <= 2 predicted sd. '-': not applicable or not\n"
-      "built (why: first seed).\n";
+      "built yet (the reason, on the first seed, under each table).\n";
   for (const BeyondTable& t : first_seed) {
     const std::string p = prefix(t);
     out += "\n" + t.dataset + ": " + shown(cells, p + "n_fiducials", 0) + " fiducials, " +
@@ -107,7 +107,8 @@ std::string format_beyond_tables(const CellTable& cells,
            shown(cells, p + "unc_rms_t_mm", 3) + ", noise floor " +
            shown(cells, p + "noise_floor_mm", 3) + "\n";
     text::TextTable table;
-    table.add({"method", "cor RMS_T", "x floor", "TRE/sd", "2 sd %", "flagged", ""});
+    table.add({"method", "cor RMS_T", "x floor", "TRE/sd", "2 sd %", "flagged"});
+    std::string why;  // rows without numbers, with the reason (first seed), under the table
     for (const BeyondRow& r : t.rows) {
       const std::string q = p + method_key(r.method) + "/";
       const bool is_auto = r.method == to_string(InterpolationMethod::kAuto);
@@ -116,10 +117,11 @@ std::string format_beyond_tables(const CellTable& cells,
       table.add({r.method + (is_auto ? auto_choice(cells, q) : ""),
                  shown(cells, q + "cor_rms_t_mm", 3), shown(cells, q + "over_floor", 2),
                  shown(cells, q + "calibration_rms_ratio", 2),
-                 shown(cells, q + "within_2sigma_percent", 0), shown(cells, q + "n_flagged", 0),
-                 none && !r.ok ? r.note.substr(0, 72) : ""});
+                 shown(cells, q + "within_2sigma_percent", 0), shown(cells, q + "n_flagged", 0)});
+      if (none && !r.ok) why += "    " + r.method + ": " + r.note + "\n";
     }
     out += table.str();
+    if (!why.empty()) out += "  -:\n" + why;
   }
   return out + "\n";
 }
