@@ -58,6 +58,10 @@ void run_lwr4(const ReproductionOptions& o, const std::function<void()>& on_step
   step(on_step);
 }
 
+BeyondOptions beyond_options(const ReproductionOptions& o) {
+  return {o.seed, o.ur5, o.lwr4, o.ur5_errors, o.lwr4_errors};
+}
+
 }  // namespace
 
 void ReproductionOptions::validate() const {
@@ -69,7 +73,8 @@ void ReproductionOptions::validate() const {
 }
 
 int reproduction_steps(const ReproductionOptions& options) {
-  return (options.ur5 ? 3 : 0) + (options.lwr4 ? 1 : 0);
+  const int beyond = options.beyond ? beyond_steps(beyond_options(options)) : 0;
+  return (options.ur5 ? 3 : 0) + (options.lwr4 ? 1 : 0) + beyond;
 }
 
 Reproduction run_reproduction(const ReproductionOptions& options,
@@ -79,6 +84,7 @@ Reproduction run_reproduction(const ReproductionOptions& options,
   out.seed = options.seed;
   if (options.ur5) run_ur5(options, on_step, out);
   if (options.lwr4) run_lwr4(options, on_step, out);
+  if (options.beyond) out.beyond = run_beyond_paper(beyond_options(options), on_step);
   return out;
 }
 

@@ -5,6 +5,7 @@
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
+#include "vrreg/experiments/beyond_report.hpp"
 #include "vrreg/experiments/findings.hpp"
 #include "vrreg/experiments/statistics.hpp"
 
@@ -102,6 +103,7 @@ std::vector<Cell> reproduction_cells(const Reproduction& r) {
   if (r.a2) table1(*r.a2, c);
   if (r.b) dataset_b(*r.b, c);
   if (r.table2) table2(*r.table2, c);
+  append_beyond_cells(r.beyond, out);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "vrreg/experiments/beyond_paper.hpp"
 #include "vrreg/experiments/distance_sweep.hpp"
 #include "vrreg/experiments/table1.hpp"
 #include "vrreg/experiments/table2.hpp"
@@ -24,6 +25,7 @@ struct ReproductionOptions {
   std::optional<simulation::TestbedErrorModel> lwr4_errors;  ///< empty: the test bed's defaults
   double l_histogram_bin_m = 0.02e-3;                        ///< L histograms (Fig. 4-6) [m]
   double delta_tre_bin_m = 0.01e-3;                          ///< Delta TRE histogram (Fig. 11) [m]
+  bool beyond = false;  ///< also the field models beside RRBC (beyond_paper.hpp; slower)
   /// Throws InputError when neither test bed is on or a bin is not > 0.
   void validate() const;
 };
@@ -35,6 +37,7 @@ struct Reproduction {
   std::optional<Table1Entry> a2;   ///< Table 1, octuplet 25 mm (d = 21.7 mm); Fig. 4
   std::optional<DistanceSweep> b;  ///< Figures 7-11
   std::optional<Table2> table2;    ///< Table 2, Figures 5, 6, 12-15
+  std::vector<BeyondTable> beyond;  ///< ReproductionOptions::beyond: beyond the paper; else empty
 };
 
 /// Progress steps run_reproduction reports for `options` (one per dataset).

@@ -1,0 +1,91 @@
+#pragma once
+// Beyond the paper (`vrreg reproduce --beyond`, docs/reproduction.md): on the simulated datasets,
+// the paper's RRBC row beside the field models (linear, trilinear, rbf, kriging, joint, auto),
+// each with its corrected RMS_T, that RMS_T over the noise floor (what a perfect correction of
+// the systematic error would leave) and how honest its predicted sd per target is.
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vrreg/core/measurement.hpp"
+#include "vrreg/correction/interpolation.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
+#include "vrreg/simulation/testbed.hpp"
+
+namespace vrreg::experiments {
+
+/// One way of correcting the targets of a dataset, on one seed.
+struct BeyondRow {
+  std::string method;  ///< "octuplet", "strategy 2", "strategy 3" or a field model's name
+  bool ok = false;     ///< false: not applicable or not built yet; `note` says why (shown "-")
+  std::string note;
+  double cor_rms_t_m = std::numeric_limits<double>::quiet_NaN();  ///< Eq. 4 after correction
+  /// RMS of TRE / sigma_pred over the targets with a predicted sd (NaN: none predicted).
+  double calibration_rms_ratio = std::numeric_limits<double>::quiet_NaN();
+  double within_2sigma = std::numeric_limits<double>::quiet_NaN();  ///< fraction TRE <= 2 sigma
+  int n_flagged = 0;   ///< targets the method could not correct (they keep their uncorrected TRE)
+  std::string chosen;  ///< auto: the method cross-validation chose
+};
+
+/// One dataset (or one KUKA configuration) of the beyond table, on one seed.
+struct BeyondTable {
+  std::string key;      ///< JSON pointer segment: A1, A2, B, A1_thinned, A1_cube27, kuka_1 ...
+  std::string dataset;  ///< what it is, for the printed table
+  int n_fiducials = 0;  ///< fiducials of the field models' registration
+  int n_targets = 0;
+  double unc_rms_t_m = 0.0;    ///< uncorrected RMS_T with the field models' registration
+  double noise_floor_m = 0.0;  ///< noise_floor_m of the targets
+  std::vector<BeyondRow> rows;
+};
+
+/// What to run: the same test beds, seed and error models as the reproduction.
+struct BeyondOptions {
+  std::uint64_t seed = 1;
+  bool ur5 = true;   ///< A1, A2, B, A1 thinned, A1 cube of 27
+  bool lwr4 = true;  ///< the KUKA grid, per configuration
+  std::optional<simulation::TestbedErrorModel> ur5_errors;
+  std::optional<simulation::TestbedErrorModel> lwr4_errors;
+};
+
+/// The field methods of the table, in printed order.
+const std::vector<InterpolationMethod>& beyond_field_methods();
+
+/// Steps run_beyond_paper reports through `on_step` (one per simulated dataset).
+int beyond_steps(const BeyondOptions& options);
+
+/// All tables of one seed: A1, A1 thinned, A1 cube27, A2, B, then kuka_<m> per configuration.
+std::vector<BeyondTable> run_beyond_paper(const BeyondOptions& options,
+                                          const std::function<void()>& on_step = {});
+
+/// `errors` with the tracker's reading noise and the robot's repeatability set to zero: the
+/// simulation draws the same robot, so a re-simulation of the same seed is the noisy run's
+/// systematic part alone (Random::normal(sigma) = sigma * normal(): the streams do not shift).
+simulation::TestbedErrorModel without_noise(simulation::TestbedErrorModel errors);
+
+/// The noise floor: RMS over `rows` of |measured - noise-free| sensor position [m]. Correcting
+/// each target by its exact systematic error leaves R (measured - noise-free) in the robot frame
+/// (rigid registration, so the norm is kept): its own averaged tracker noise and repeatability.
+/// Throws InputError when the two sets do not hold the same locations.
+double noise_floor_m(const MeasurementSet& measured, const MeasurementSet& noise_free,
+                     const std::vector<std::size_t>& rows);
+
+/// Targets of a set, as positions in set.select(Role::kTarget), forming one table.
+struct TargetGroup {
+  std::string key;
+  std::string dataset;
+  std::vector<std::size_t> positions;
+};
+
+/// Registers all fiducials of `measured` (robot stored for the joint model) and corrects all its
+/// targets with every method of beyond_field_methods(); the paper's octuplet first when
+/// `octuplet_edge_m` is given. One table per group; a method that throws is a row with ok = false.
+std::vector<BeyondTable> beyond_tables(const MeasurementSet& measured,
+                                       const MeasurementSet& noise_free,
+                                       const kinematics::SerialChain& robot, double sigma_rep_m,
+                                       const std::vector<TargetGroup>& groups,
+                                       std::optional<double> octuplet_edge_m);
+
+}  // namespace vrreg::experiments
