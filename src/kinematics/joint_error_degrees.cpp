@@ -20,6 +20,29 @@ constexpr double kDegreeGain = 1e-3;
 constexpr int kCandidateDegrees[] = {0,  1,  2,  3,  4,  5,  6,  8,  10, 12, 14,
                                      16, 20, 24, 28, 32, 36, 40, 48, 56, 60};
 
+// Joint values closer than this are one sample of that joint's error function.
+constexpr double kSameAngleRad = 1e-6;
+
+// The largest degree each joint's function may take: a third of its distinct sampled angles. On a grid
+// many fiducials share a joint's angle (a column of the grid shares q1); a polynomial through
+// those few values is free in between, where targets sit, and cross-validation on the fiducials
+// cannot see it because held-out fiducials share the training fiducials' angles.
+std::vector<int> degree_caps(const std::vector<JointVector>& q_rad, int n_joints) {
+  std::vector<int> caps(static_cast<std::size_t>(n_joints), 0);
+  for (int i = 0; i < n_joints; ++i) {
+    std::vector<double> values;
+    values.reserve(q_rad.size());
+    for (const JointVector& q : q_rad) values.push_back(q(i));
+    std::sort(values.begin(), values.end());
+    int distinct = values.empty() ? 0 : 1;
+    for (std::size_t k = 1; k < values.size(); ++k) {
+      if (values[k] - values[k - 1] > kSameAngleRad) ++distinct;
+    }
+    caps[static_cast<std::size_t>(i)] = std::max(0, (distinct - 1) / 3);
+  }
+  return caps;
+}
+
 struct FoldGrams {
   std::vector<Eigen::MatrixXd> gram;  // A_f^T A_f of the held-out rows, scaled columns
   std::vector<Eigen::VectorXd> rhs;   // A_f^T e_f
@@ -131,11 +154,15 @@ JointDegreeChoice choose_joint_degrees(const JointErrorModel::State& s,
   for (const int d : kCandidateDegrees) {
     if (d <= options.max_joint_degree) candidates.push_back(d);
   }
+  const std::vector<int> caps = degree_caps(q_rad, n);
   // A common degree first, then each joint's own by coordinate search until nothing changes.
   JointDegreeChoice best{std::vector<int>(static_cast<std::size_t>(n), 0),
                          std::numeric_limits<double>::infinity()};
   for (const int d : candidates) {
-    const std::vector<int> degrees(static_cast<std::size_t>(n), d);
+    std::vector<int> degrees(static_cast<std::size_t>(n), d);
+    for (int i = 0; i < n; ++i) {
+      degrees[static_cast<std::size_t>(i)] = std::min(d, caps[static_cast<std::size_t>(i)]);
+    }
     const double cv = scorer.cv_rms_m(degrees);
     if (cv < best.cv_rms_m * (1.0 - kDegreeGain)) best = {degrees, cv};
   }
@@ -144,7 +171,8 @@ JointDegreeChoice choose_joint_degrees(const JointErrorModel::State& s,
     for (int i = 0; i < n; ++i) {
       for (const int d : candidates) {
         std::vector<int> degrees = best.degrees;
-        if (degrees[static_cast<std::size_t>(i)] == d) continue;
+        if (degrees[static_cast<std::size_t>(i)] == d || d > caps[static_cast<std::size_t>(i)])
+          continue;
         degrees[static_cast<std::size_t>(i)] = d;
         const double cv = scorer.cv_rms_m(degrees);
         if (cv < best.cv_rms_m * (1.0 - kDegreeGain)) {

@@ -203,6 +203,23 @@ TEST(JointErrorModel, DegreeChoiceByCrossValidationFindsTheCubics) {
   EXPECT_EQ(again.parameters(), m.parameters());
 }
 
+// A joint sampled at few distinct angles (a grid column shares q1) cannot carry a high degree:
+// a polynomial through them is free in between, and cross-validation on fiducials that share
+// those angles cannot see it. The degree is capped at a third of the distinct angles.
+TEST(JointErrorModel, DegreeIsCappedByTheDistinctAnglesOfEachJoint) {
+  const TruthRobot truth = make_truth(1e-3, 19);
+  Random rng(20);
+  std::vector<JointVector> fid = joints_near(truth.q0, 0.3, 300, rng);
+  for (std::size_t j = 0; j < fid.size(); ++j) {
+    fid[j](0) = truth.q0(0) + 0.05 * static_cast<double>(j % 7);  // 7 distinct q1 values
+  }
+  JointErrorModelOptions o;
+  o.max_joint_degree = 8;
+  const JointErrorModel m =
+      JointErrorModel::fit(truth.nominal, fid, errors_of(truth, fid), o, truth.p_marker_m);
+  EXPECT_LE(m.joint_degrees()[0], 2);  // (7 - 1) / 3
+}
+
 TEST(JointErrorModel, BadInputIsReported) {
   const TruthRobot truth = make_truth(1e-3, 19);
   Random rng(20);
