@@ -76,3 +76,20 @@ def test_model_round_trip_python_to_cli(cli, cell, example_cell, tmp_path):
 def test_reproduce_matches_cli(cli):
     j = cli("reproduce", "--seed", 1, "--json", "--quiet", "--out", "")
     assert vrreg.reproduce(seed=1) == j
+
+
+def test_field_model_matches_cli_with_predicted_sd(cli, cell, example_cell, tmp_path):
+    """A field model (trilinear on the filled lattice) gives the command line's numbers, and its
+    predicted sd and calibration, through Python."""
+    model_path = tmp_path / "model.json"
+    cli("register", "--fiducials", example_cell, "--sigma-rep-mm", 0.05, "-o", model_path)
+    model = vrreg.load_model(str(model_path))
+    j = cli("evaluate", "--model", model_path, "--targets", example_cell,
+            "--interpolation", "trilinear", "--json")
+    e = vrreg.evaluate(model, cell, interpolation="trilinear")
+    assert j["interpolation"] == e.method == "trilinear"
+    assert close(j["cor_rms_t_mm"], e.cor_rms_t * MM)
+    assert e.predicted_sd is not None and e.predicted_sd.shape == (e.n_targets,)
+    assert close(j["predicted_sd_median_mm"], np.median(e.predicted_sd) * MM)
+    assert close(j["calibration"]["rms_tre_over_sd"], e.calibration["rms_tre_over_sd"])
+    assert vrreg.evaluate(model, cell).predicted_sd is None  # the paper's stencils give none
