@@ -28,12 +28,12 @@ def load(path):
     return data[:, :3], data[:, 3:]
 
 
-def rms_3d(predicted, truth):
-    return float(np.sqrt(np.mean(np.sum((predicted - truth) ** 2, axis=1))))
+def rms_3d_mm(predicted_m, truth_m):
+    return 1e3 * float(np.sqrt(np.mean(np.sum((predicted_m - truth_m) ** 2, axis=1))))
 
 
 def sklearn_gp(fid, val, tgt, fit_subset=None):
-    """Per axis, ML hyperparameters (sklearn's L-BFGS-B, 1 restart); above fit_subset the
+    """Per axis, ML hyperparameters (sklearn's L-BFGS-B, no restart); above fit_subset the
     hyperparameters come from a seeded subset and the final fit uses all fiducials."""
     out = np.zeros((tgt.shape[0], 3))
     for axis in range(3):
@@ -43,11 +43,11 @@ def sklearn_gp(fid, val, tgt, fit_subset=None):
         x, y = fid, val[:, axis]
         if fit_subset is not None and len(x) > fit_subset:
             pick = np.random.default_rng(1).choice(len(x), fit_subset, replace=False)
-            gp = GaussianProcessRegressor(kernel, normalize_y=True, n_restarts_optimizer=1,
+            gp = GaussianProcessRegressor(kernel, normalize_y=True, n_restarts_optimizer=0,
                                           random_state=0).fit(x[pick], y[pick])
             gp = GaussianProcessRegressor(gp.kernel_, normalize_y=True, optimizer=None).fit(x, y)
         else:
-            gp = GaussianProcessRegressor(kernel, normalize_y=True, n_restarts_optimizer=1,
+            gp = GaussianProcessRegressor(kernel, normalize_y=True, n_restarts_optimizer=0,
                                           random_state=0).fit(x, y)
         out[:, axis] = gp.predict(tgt)
     return out
@@ -68,6 +68,15 @@ def scipy_rbf(fid, val, tgt, neighbors=None):
     model = RBFInterpolator(fid, val, kernel="cubic", degree=1, smoothing=best[1],
                             neighbors=neighbors)
     return model(tgt)
+
+
+class Rows(list):
+    """Prints each table row as soon as it is measured (the GP peers take minutes)."""
+
+    def append(self, row):
+        dataset, method, rms_mm, sec = row
+        print(f"| {dataset} | {method} | {rms_mm:.4f} | {sec:.2f} |", flush=True)
+        super().append(row)
 
 
 def timed(fn, *args, **kwargs):
@@ -91,7 +100,11 @@ def main():
             method = "kriging" if "Kriging" in b["name"] else "rbf"
             dataset = "A1" if b["fiducials"] < 2000 else "A2"
             vrreg[(dataset, method)] = (b["rms_um"] / 1e3, b["real_time"] / 1e3)
-        rows = []
+            print(f"vrreg {method} {dataset}: process CPU {b['cpu_time'] / 1e3:.2f} s",
+                  file=sys.stderr)
+        print("| data | method | RMS vs true field [mm] | fit + predict [s] |")
+        print("|---|---|---|---|", flush=True)
+        rows = Rows()
         for dataset in ("A1", "A2"):
             fid, val = load(f"{tmp}/{dataset.lower()}_fiducials.csv")
             tgt, truth = load(f"{tmp}/{dataset.lower()}_targets.csv")
@@ -101,14 +114,10 @@ def main():
                 pass
             else:
                 pred, sec = timed(sklearn_gp, fid, val, tgt, 1000 if big else None)
-                rows.append((dataset, "sklearn GaussianProcessRegressor", rms_3d(pred, truth), sec))
+                rows.append((dataset, "sklearn GaussianProcessRegressor", rms_3d_mm(pred, truth), sec))
             rows.append((dataset, "vrreg rbf", *vrreg[(dataset, "rbf")]))
             pred, sec = timed(scipy_rbf, fid, val, tgt, 150 if big else None)
-            rows.append((dataset, "scipy RBFInterpolator (5-fold CV)", rms_3d(pred, truth), sec))
-    print("| data | method | RMS vs true field [mm] | fit + predict [s] |")
-    print("|---|---|---|---|")
-    for dataset, method, rms_mm, sec in rows:
-        print(f"| {dataset} | {method} | {rms_mm:.4f} | {sec:.2f} |")
+            rows.append((dataset, "scipy RBFInterpolator (5-fold CV)", rms_3d_mm(pred, truth), sec))
 
 
 if __name__ == "__main__":

@@ -6,6 +6,7 @@
 
 #include "field_test_support.hpp"
 #include "vrreg/correction/kriging.hpp"
+#include "vrreg_test.hpp"
 
 namespace vrreg {
 namespace {
@@ -34,6 +35,8 @@ Eigen::VectorXd noisy(Random& rng, Eigen::VectorXd latent, double sd) {
 // 294 points. The sd of a log-length estimate at this size is ~0.15-0.25 (measured spread),
 // so the mean of 9 log-ratios is held to 0.2 and each single one to 0.7.
 TEST(KrigingStatistics, RemlRecoversLengthScales) {
+  // Minutes under the sanitizers; the same fit and predict paths run there in kriging_test.cpp.
+  if (testing::sanitized()) GTEST_SKIP() << "Monte Carlo: release build only";
   const Points3 p = grid_294();
   Eigen::Array3d sum_log_ratio = Eigen::Array3d::Zero();
   double sum_log_signal = 0.0;
@@ -68,6 +71,8 @@ TEST(KrigingStatistics, RemlRecoversLengthScales) {
 // Monte Carlo noise (~0.03); with fitted ones the plug-in sd ignores the hyperparameters' own
 // uncertainty, which measured 1.02-1.10 here: bound 0.9-1.15.
 TEST(KrigingStatistics, PredictedSdIsCalibrated) {
+  // Minutes under the sanitizers; the same fit and predict paths run there in kriging_test.cpp.
+  if (testing::sanitized()) GTEST_SKIP() << "Monte Carlo: release build only";
   double sum_z2 = 0.0;
   double sum_z2_true = 0.0;
   int count = 0;
