@@ -92,7 +92,11 @@ TEST_F(HandEyeCli, BadUsage) {
   ASSERT_EQ(run_vrreg("simulate ur5 A2 --seed 2 -o " + p("a2.csv")).status, 0);
   EXPECT_NE(run_vrreg("register --fiducials " + p("a2.csv") + " --estimate-marker-offset").status,
             0);  // no --robot
-  EXPECT_NE(run_vrreg("register --fiducials " + p("a2.csv") + " --robot ur5").status, 0);
+  // --robot alone is not the hand-eye registration: it is stored for the joint-space field model.
+  ASSERT_EQ(run_vrreg("register --fiducials " + p("a2.csv") + " --robot ur5 -o " + p("r.json"))
+                .status,
+            0);
+  EXPECT_NE(read_text(dir_ / "r.json").find("\"robot\""), std::string::npos);
   EXPECT_NE(
       run_vrreg("register --fiducials " + p("a2.csv") + " --estimate-marker-offset --robot lwr4")
           .status,

@@ -1,0 +1,80 @@
+// Field models as a user runs them (issue 12): evaluate --interpolation auto prints the
+// cross-validation table and the predicted sd with its calibration, register --interpolation
+// auto stores the choice, the CSVs gain predicted_sd_mm, the same input gives the same bytes.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace vrreg::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+class FieldModelCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fresh_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    cell_ = (fs::path(VRREG_SOURCE_DIR) / "examples/data/example-cell.csv").string();
+    ASSERT_EQ(run_vrreg_in(dir_, "register --fiducials " + cell_ + " -o m.json").status, 0);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+  std::string cell_;
+};
+
+TEST_F(FieldModelCli, TrilinearWritesPredictedSdAndTheSameBytesTwice) {
+  const std::string args = "evaluate --model m.json --targets " + cell_ +
+                           " --interpolation trilinear --per-target pt.csv --json";
+  const CliResult a = run_vrreg_in(dir_, args);
+  ASSERT_EQ(a.status, 0) << a.err;
+  const std::string first = read_text(dir_ / "pt.csv");
+  const CliResult b = run_vrreg_in(dir_, args);
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_EQ(first, read_text(dir_ / "pt.csv"));
+  EXPECT_NE(first.find(",predicted_sd_mm\n"), std::string::npos);
+  const nlohmann::json j = nlohmann::json::parse(a.out);
+  EXPECT_EQ(j["interpolation"], "trilinear");
+  EXPECT_GT(j["predicted_sd_median_mm"].get<double>(), 0.0);
+  EXPECT_GT(j["calibration"]["rms_tre_over_sd"].get<double>(), 0.7);
+  EXPECT_LT(j["calibration"]["rms_tre_over_sd"].get<double>(), 1.3);
+  const CliResult c = run_vrreg_in(
+      dir_, "correct --model m.json --points " + cell_ + " --interpolation trilinear -o c.csv");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_NE(read_text(dir_ / "c.csv").find(",predicted_sd_mm\n"), std::string::npos);
+  EXPECT_NE(c.out.find("predicted sd (1 sigma, 3D)"), std::string::npos) << c.out;
+}
+
+TEST_F(FieldModelCli, AutoPrintsTheTableAndRegisterStoresTheChoice) {
+  if (std::getenv("VRREG_SANITIZED") != nullptr) GTEST_SKIP() << "kriging is slow under ASan";
+  const CliResult e =
+      run_vrreg_in(dir_, "evaluate --model m.json --targets " + cell_ + " --interpolation auto");
+  ASSERT_EQ(e.status, 0) << e.err;
+  for (const char* s : {"cross-validation              5 folds", "scattered", "trilinear", "rbf",
+                        "kriging", "joint        not applicable: the fiducials have no joint",
+                        "<- chosen", "calibration of sigma_pred"}) {
+    EXPECT_NE(e.out.find(s), std::string::npos) << s << "\n" << e.out;
+  }
+  const CliResult r = run_vrreg_in(
+      dir_, "register --fiducials " + cell_ + " --interpolation auto -o auto.json --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const std::string chosen = j["cross_validation"]["chosen"];
+  EXPECT_EQ(j["interpolation"], chosen);
+  EXPECT_NE(chosen, "auto");
+  const nlohmann::json model = nlohmann::json::parse(read_text(dir_ / "auto.json"));
+  EXPECT_EQ(model["interpolation"]["method"], chosen);
+}
+
+TEST_F(FieldModelCli, JointWithoutJointsOrRobotSaysWhy) {
+  const CliResult e =
+      run_vrreg_in(dir_, "evaluate --model m.json --targets " + cell_ + " --interpolation joint");
+  EXPECT_EQ(e.status, 1);
+  EXPECT_NE(e.err.find("no joint angles"), std::string::npos) << e.err;
+  EXPECT_EQ(e.err.find('\n'), e.err.size() - 1) << e.err;  // one line
+}
+
+}  // namespace
+}  // namespace vrreg::testing
