@@ -112,7 +112,8 @@ std::vector<BeyondTable> beyond_tables(const MeasurementSet& measured,
                                        const MeasurementSet& noise_free,
                                        const kinematics::SerialChain& robot, double sigma_rep_m,
                                        const std::vector<TargetGroup>& groups,
-                                       std::optional<double> octuplet_edge_m) {
+                                       std::optional<double> octuplet_edge_m,
+                                       const std::vector<InterpolationMethod>& methods) {
   // One registration of all fiducials, as Table 1 does; sigma_L is not reported here (slow).
   RegisterOptions reg;
   reg.rigid_body_statistics = false;
@@ -127,7 +128,7 @@ std::vector<BeyondTable> beyond_tables(const MeasurementSet& measured,
     octuplet.cube_edge_m = *octuplet_edge_m;
     outcomes.push_back(evaluate_method(registered.model, measured, "octuplet", octuplet));
   }
-  for (const InterpolationMethod m : beyond_field_methods()) {
+  for (const InterpolationMethod m : methods.empty() ? beyond_field_methods() : methods) {
     InterpolationChoice choice;
     choice.method = m;
     outcomes.push_back(evaluate_method(registered.model, measured, to_string(m), choice));

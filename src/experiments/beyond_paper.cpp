@@ -95,7 +95,7 @@ void beyond_ur5(const BeyondOptions& o, const std::function<void()>& on_step,
   const auto tables = [&](const Twin& t, const std::string& key, const std::string& what,
                           std::optional<double> octuplet) {
     return beyond_tables(t.measured, t.noise_free, ur5.nominal, rep,
-                         {{key, what, all_positions(t.measured)}}, octuplet);
+                         {{key, what, all_positions(t.measured)}}, octuplet, o.methods);
   };
   const double a1_step_m = simulation::grid_spec(Dataset::kA1).step_m;
   const Twin a1 = simulate_twin(ur5, Dataset::kA1, o.seed, o.ur5_errors);
@@ -158,7 +158,7 @@ void beyond_lwr4(const BeyondOptions& o, const std::function<void()>& on_step,
     groups.push_back(std::move(g));
   }
   std::vector<BeyondTable> tables = beyond_tables(grid.measured, grid.noise_free, lwr4.nominal,
-                                                  lwr4.sigma_rep_spec_m, groups, {});
+                                                  lwr4.sigma_rep_spec_m, groups, {}, o.methods);
   Table2Options t2;
   t2.sigma_rep_m = lwr4.sigma_rep_spec_m;
   t2.strategy3_seed = o.seed;

@@ -59,7 +59,7 @@ void run_lwr4(const ReproductionOptions& o, const std::function<void()>& on_step
 }
 
 BeyondOptions beyond_options(const ReproductionOptions& o) {
-  return {o.seed, o.ur5, o.lwr4, o.ur5_errors, o.lwr4_errors};
+  return {o.seed, o.ur5, o.lwr4, o.ur5_errors, o.lwr4_errors, {}};
 }
 
 }  // namespace

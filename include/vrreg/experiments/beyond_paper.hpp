@@ -48,6 +48,8 @@ struct BeyondOptions {
   bool lwr4 = true;  ///< the KUKA grid, per configuration
   std::optional<simulation::TestbedErrorModel> ur5_errors;
   std::optional<simulation::TestbedErrorModel> lwr4_errors;
+  /// The field methods to run; empty: all of beyond_field_methods() (tests pick cheap ones).
+  std::vector<InterpolationMethod> methods;
 };
 
 /// The field methods of the table, in printed order.
@@ -80,12 +82,14 @@ struct TargetGroup {
 };
 
 /// Registers all fiducials of `measured` (robot stored for the joint model) and corrects all its
-/// targets with every method of beyond_field_methods(); the paper's octuplet first when
-/// `octuplet_edge_m` is given. One table per group; a method that throws is a row with ok = false.
+/// targets with every method of `methods` (empty: beyond_field_methods()); the paper's octuplet
+/// first when `octuplet_edge_m` is given. One table per group; a method that throws is a row
+/// with ok = false.
 std::vector<BeyondTable> beyond_tables(const MeasurementSet& measured,
                                        const MeasurementSet& noise_free,
                                        const kinematics::SerialChain& robot, double sigma_rep_m,
                                        const std::vector<TargetGroup>& groups,
-                                       std::optional<double> octuplet_edge_m);
+                                       std::optional<double> octuplet_edge_m,
+                                       const std::vector<InterpolationMethod>& methods = {});
 
 }  // namespace vrreg::experiments
