@@ -9,24 +9,6 @@
 #include "vrreg/core/units.hpp"
 
 namespace vrreg::cli {
-namespace {
-
-// The finite predicted sd values, sorted.
-std::vector<double> finite_sd(const TargetCorrection& c) {
-  std::vector<double> out;
-  for (Eigen::Index i = 0; i < c.predicted_sd_m.size(); ++i) {
-    if (std::isfinite(c.predicted_sd_m(i))) out.push_back(c.predicted_sd_m(i));
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-double median_of_sorted(const std::vector<double>& v) {
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-}  // namespace
 
 void print_cross_validation(const CrossValidation& cv) {
   std::printf("  cross-validation              %d folds over the fiducials (fold shuffle seed %llu); "
@@ -76,10 +58,10 @@ nlohmann::json cross_validation_json(const CrossValidation& cv) {
 
 void print_predicted_sd(const TargetCorrection& c,
                         const std::optional<UncertaintyCalibration>& calibration) {
-  const std::vector<double> sd = finite_sd(c);
-  if (sd.empty()) return;
+  const PredictedSdSummary sd = summarize_predicted_sd(c.predicted_sd_m);
+  if (sd.n == 0) return;
   std::printf("  predicted sd (1 sigma, 3D)    median %s mm, max %s mm\n",
-              format_mm(median_of_sorted(sd)).c_str(), format_mm(sd.back()).c_str());
+              format_mm(sd.median_m).c_str(), format_mm(sd.max_m).c_str());
   if (calibration && calibration->n > 0) {
     std::printf("  calibration of sigma_pred     RMS of TRE / sigma_pred %.2f (1 = calibrated), "
                 "%.0f %% within 2 sigma\n",
@@ -90,10 +72,10 @@ void print_predicted_sd(const TargetCorrection& c,
 void add_predicted_sd_json(const TargetCorrection& c,
                            const std::optional<UncertaintyCalibration>& calibration,
                            nlohmann::json& j) {
-  const std::vector<double> sd = finite_sd(c);
-  if (sd.empty()) return;
-  j["predicted_sd_median_mm"] = units::m_to_mm(median_of_sorted(sd));
-  j["predicted_sd_max_mm"] = units::m_to_mm(sd.back());
+  const PredictedSdSummary sd = summarize_predicted_sd(c.predicted_sd_m);
+  if (sd.n == 0) return;
+  j["predicted_sd_median_mm"] = units::m_to_mm(sd.median_m);
+  j["predicted_sd_max_mm"] = units::m_to_mm(sd.max_m);
   if (calibration && calibration->n > 0) {
     j["calibration"] = {{"n", calibration->n},
                         {"rms_tre_over_sd", calibration->rms_ratio},

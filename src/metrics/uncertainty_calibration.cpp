@@ -1,10 +1,27 @@
 #include "vrreg/metrics/uncertainty_calibration.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "vrreg/core/check.hpp"
 
 namespace vrreg {
+
+PredictedSdSummary summarize_predicted_sd(const Eigen::Ref<const Eigen::VectorXd>& sd_m) {
+  std::vector<double> finite;
+  for (Eigen::Index i = 0; i < sd_m.size(); ++i) {
+    if (std::isfinite(sd_m(i))) finite.push_back(sd_m(i));
+  }
+  PredictedSdSummary out;
+  if (finite.empty()) return out;
+  std::sort(finite.begin(), finite.end());
+  const std::size_t n = finite.size();
+  out.n = static_cast<Eigen::Index>(n);
+  out.median_m = n % 2 == 1 ? finite[n / 2] : 0.5 * (finite[n / 2 - 1] + finite[n / 2]);
+  out.max_m = finite.back();
+  return out;
+}
 
 UncertaintyCalibration uncertainty_calibration(const Eigen::Ref<const Eigen::VectorXd>& tre_m,
                                                const Eigen::Ref<const Eigen::VectorXd>& sd_m) {

@@ -9,6 +9,7 @@
 #include "charts.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/metrics/errors.hpp"
+#include "vrreg/metrics/uncertainty_calibration.hpp"
 #include "vrreg/report/cell_report.hpp"
 
 namespace vrreg::report {
@@ -57,12 +58,8 @@ ReportTable summary_table(const CellReportInput& in, const CellAnalysis& a) {
   };
   const EvaluateResult& e = in.evaluation;
   if (e.calibration.n > 0) {  // a field model: its predicted uncertainty, and how honest it was
-    std::vector<double> sd;
-    for (Eigen::Index i = 0; i < e.correction.predicted_sd_m.size(); ++i) {
-      if (std::isfinite(e.correction.predicted_sd_m(i))) sd.push_back(e.correction.predicted_sd_m(i));
-    }
-    std::sort(sd.begin(), sd.end());
-    t.rows.push_back({"predicted σ of a corrected target (median)", mm(sd[sd.size() / 2])});
+    const PredictedSdSummary sd = summarize_predicted_sd(e.correction.predicted_sd_m);
+    t.rows.push_back({"predicted σ of a corrected target (median)", mm(sd.median_m)});
     t.rows.push_back({"calibration: RMS of TRE / σ_pred (1 = honest)",
                       num(e.calibration.rms_ratio, 2) + ", " +
                           num(100.0 * e.calibration.within_2sigma, 0) + " % within 2σ"});
