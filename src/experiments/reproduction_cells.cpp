@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "vrreg/experiments/reproduction_cells.hpp"
 
 #include <cmath>
@@ -132,12 +133,19 @@ CellTable summarize_cells(const std::vector<std::vector<Cell>>& per_seed) {
       values.push_back(seed[k].value);
     }
     if (first[k].kind == CellKind::kKey) {  // the same on every seed: exactly that value
-      out.cells.push_back({first[k].pointer, CellKind::kKey, first[k].value, 0.0, out.n_seeds});
+      out.cells.push_back(
+          {first[k].pointer, CellKind::kKey, first[k].value, 0.0, first[k].value, out.n_seeds});
       continue;
     }
     const MeanSd m = mean_sd(values);
-    out.cells.push_back(
-        {first[k].pointer, first[k].kind, defined ? m.mean : kNaN, defined ? m.sd : kNaN, m.n});
+    double median = kNaN;
+    if (defined) {
+      std::sort(values.begin(), values.end());
+      const std::size_t n = values.size();
+      median = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    }
+    out.cells.push_back({first[k].pointer, first[k].kind, defined ? m.mean : kNaN,
+                         defined ? m.sd : kNaN, median, m.n});
   }
   return out;
 }

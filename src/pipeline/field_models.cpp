@@ -1,9 +1,46 @@
 // Dispatch over the field models and what each needs (docs/field-models.md).
 #include "field_models.hpp"
 
+#include <array>
+#include <cmath>
+#include <map>
+#include <sstream>
+
 #include "vrreg/core/check.hpp"
 
 namespace vrreg::pipeline_detail {
+namespace {
+
+/// Joint angles further apart than this at one nominal position are another arm configuration.
+constexpr double kSameConfigurationRad = 1e-3;
+
+/// Two fiducials at one nominal position (the same after rounding to data.tolerance_m, as
+/// repeated nominal positions in a file are) in different arm configurations, which a field of
+/// position alone cannot tell apart; empty when none.
+std::string configuration_clash(const FieldData& data) {
+  if (data.joints_rad.size() == 0) return {};
+  std::map<std::array<long long, 3>, Eigen::Index> first_at;
+  for (Eigen::Index j = 0; j < data.size(); ++j) {
+    std::array<long long, 3> key{};
+    for (int axis = 0; axis < 3; ++axis)
+      key[static_cast<std::size_t>(axis)] =
+          std::llround(data.fiducials_robot_m(axis, j) / data.tolerance_m);
+    const auto [it, inserted] = first_at.emplace(key, j);
+    if (inserted) continue;
+    const Eigen::Index k = it->second;
+    if ((data.joints_rad.col(j) - data.joints_rad.col(k)).cwiseAbs().maxCoeff() >
+        kSameConfigurationRad) {
+      std::ostringstream out;
+      out << "fiducials " << k << " and " << j
+          << " share a nominal robot position in different arm configurations (use joint, or "
+             "one model per configuration)";
+      return out.str();
+    }
+  }
+  return {};
+}
+
+}  // namespace
 
 FieldData FieldData::subset(const std::vector<Eigen::Index>& keep) const {
   FieldData out;
@@ -39,6 +76,9 @@ std::string field_model_unavailable(InterpolationMethod method, const FieldData&
              " joint angles, the robot " + std::to_string(data.robot->n_joints());
   }
   if (data.size() < 12) return "fewer than 12 fiducials";
+  // The other position-only models refuse any shared position when they are built; kriging
+  // takes repeated readings of one configuration (its nugget), not another configuration.
+  if (method == InterpolationMethod::kKriging) return configuration_clash(data);
   return {};
 }
 

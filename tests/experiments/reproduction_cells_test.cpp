@@ -58,7 +58,13 @@ TEST(ReproductionCells, MeanAndSdOverSeeds) {
   ASSERT_NE(c, nullptr);
   EXPECT_NEAR(c->mean, 0.24, 1e-12);
   EXPECT_NEAR(c->sd, 0.04, 1e-12);
+  EXPECT_NEAR(c->median, 0.24, 1e-12);
   EXPECT_EQ(c->n, 3);
+  // The median of an even count is the mean of the middle two, not the mean of all.
+  const CellTable even = summarize_cells(
+      {reproduction_cells(small(0.20)), reproduction_cells(small(0.22)),
+       reproduction_cells(small(0.30)), reproduction_cells(small(0.40))});
+  EXPECT_NEAR(even.find("/table1/A1/cor_rms_t_mm")->median, 0.26, 1e-12);
   EXPECT_EQ(t.find("/nothing"), nullptr);
   std::vector<Cell> other = reproduction_cells(small(0.2));
   other.front().value = 25.0;  // d_mm is a key: it must be the same on every seed

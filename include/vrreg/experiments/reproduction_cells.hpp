@@ -34,6 +34,7 @@ struct CellSummary {
   CellKind kind = CellKind::kValue;
   double mean = 0.0;  ///< NaN when undefined on some seed
   double sd = 0.0;    ///< sample sd over seeds (0 for one seed)
+  double median = 0.0;  ///< median over seeds (mean of the middle two for an even count)
   int n = 0;          ///< seeds
 };
 
