@@ -7,6 +7,7 @@
 #include "points.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
+#include "vrreg/robot_io/robot_file.hpp"
 #include "vrreg/vrreg.hpp"
 
 namespace vrreg::python {
@@ -21,6 +22,13 @@ InterpolationChoice interpolation_choice(const std::optional<std::string>& metho
   return c;
 }
 
+/// The arm a joint-space model needs: a built-in name ('ur5', 'lwr4', ...) or a robot file (its
+/// tool the marker), as `--robot` on the command line; none when not given.
+std::optional<kinematics::SerialChain> arm_of(const std::optional<std::string>& arm) {
+  if (!arm) return std::nullopt;
+  return io::load_robot(*arm);
+}
+
 struct RegisterKwargs {
   std::optional<int> config;
   bool scale = false;
@@ -32,6 +40,7 @@ struct RegisterKwargs {
   std::string joint_norm = "l2";
   std::optional<std::uint64_t> seed;
   bool rigid_body = true;
+  std::optional<std::string> arm;
 
   [[nodiscard]] RegisterOptions options() const {
     RegisterOptions o;
@@ -44,6 +53,7 @@ struct RegisterKwargs {
     o.procedure2.strategy = planning::strategy_from_number(strategy);
     o.procedure2.joint_norm = kinematics::parse_joint_norm(joint_norm);
     o.procedure2.seed = seed;
+    o.robot = arm_of(arm);
     o.validate();
     return o;
   }
@@ -83,7 +93,8 @@ interpolation: 'linear' (grid or scattered), 'grid', 'scattered', 'octuplet', or
   model: 'trilinear', 'kriging', 'rbf', 'joint', 'auto' (by cross-validation); stored as
   evaluate's and correct's default. cube_edge: octuplet cube edge [m]. strategy: Procedure 2 strategy 0-3 (section 4.4),
   joint_norm 'l2' or 'linf', seed (strategy 3). rigid_body=False skips sigma_L, which costs
-  O(N^2) pairs (use it for very large N).
+  O(N^2) pairs (use it for very large N). arm: the robot whose joints are given, for the
+  'joint' model ('ur5', 'lwr4', ... or a robot file; stored in the model), as --robot.
 Raises ValueError (vrreg.InputError) on bad shapes, NaN, fewer than 3 or collinear points.)doc";
 
 constexpr const char* kEvaluateDoc =
@@ -94,6 +105,7 @@ sensor: (N, 3) measured target positions, sensor frame, METRES, or a vrreg.Measu
   target rows; as `vrreg evaluate --targets`). robot: (N, 3) nominal positions, robot frame, METRES.
 names, configs, joints: optional per-target extras. config: evaluate this label only.
 interpolation / cube_edge [m]: override the model's. strategy, joint_norm: Procedure 2 overrides.
+arm: the robot for the 'joint' model (default: the model's), as --robot.
 Raises ValueError (vrreg.InputError) on bad input.)doc";
 
 constexpr const char* kCorrectDoc =
@@ -103,7 +115,8 @@ constexpr const char* kCorrectDoc =
 sensor: (N, 3) measured positions, sensor frame, METRES, or a vrreg.Measurements (its target rows;
   as `vrreg correct --points`). robot: (N, 3) nominal positions [m], needed by octuplet only.
 names, configs, joints: optional per-point extras. config, interpolation, cube_edge [m]: override
-the model's. Points outside the fiducials keep the uncorrected mapping and a status saying why.)doc";
+the model's; arm: the robot for the 'joint' model (default: the model's). Points outside the
+fiducials keep the uncorrected mapping and a status saying why.)doc";
 
 }  // namespace
 
@@ -115,10 +128,10 @@ void bind_pipeline(py::module_& m) {
          const py::object& n_readings, const py::object& sensor_sq_dev, std::optional<int> config,
          bool scale, bool robust, std::optional<double> sigma_rep, const std::string& interpolation,
          std::optional<double> cube_edge, int strategy, const std::string& joint_norm,
-         std::optional<std::uint64_t> seed, bool rigid_body) {
+         std::optional<std::uint64_t> seed, bool rigid_body, std::optional<std::string> arm) {
         const RegisterOptions options =
-            RegisterKwargs{config,    scale,    robust,     sigma_rep, interpolation,
-                           cube_edge, strategy, joint_norm, seed,      rigid_body}
+            RegisterKwargs{config,    scale,    robust,     sigma_rep,  interpolation, cube_edge,
+                           strategy,  joint_norm, seed,     rigid_body, arm}
                 .options();
         return on_points(sensor, robot,
                          {weights, names, configs, joints, n_readings, sensor_sq_dev},
@@ -134,7 +147,8 @@ void bind_pipeline(py::module_& m) {
       py::arg("config") = py::none(), py::arg("scale") = false, py::arg("robust") = false,
       py::arg("sigma_rep") = py::none(), py::arg("interpolation") = "linear",
       py::arg("cube_edge") = py::none(), py::arg("strategy") = 0, py::arg("joint_norm") = "l2",
-      py::arg("seed") = py::none(), py::arg("rigid_body") = true, kRegisterDoc);
+      py::arg("seed") = py::none(), py::arg("rigid_body") = true, py::arg("arm") = py::none(),
+      kRegisterDoc);
 
   m.def(
       "evaluate",
@@ -142,9 +156,10 @@ void bind_pipeline(py::module_& m) {
          const py::object& names, const py::object& configs, const py::object& joints,
          std::optional<int> config, std::optional<std::string> interpolation,
          std::optional<double> cube_edge, std::optional<int> strategy,
-         std::optional<std::string> joint_norm) {
+         std::optional<std::string> joint_norm, std::optional<std::string> arm) {
         EvaluateOptions options;
         options.config = config;
+        options.robot = arm_of(arm);
         options.interpolation = interpolation_choice(interpolation, cube_edge);
         if (strategy) options.strategy = planning::strategy_from_number(*strategy);
         if (joint_norm) options.joint_norm = kinematics::parse_joint_norm(*joint_norm);
@@ -161,16 +176,18 @@ void bind_pipeline(py::module_& m) {
       py::arg("names") = py::none(), py::arg("configs") = py::none(),
       py::arg("joints") = py::none(), py::arg("config") = py::none(),
       py::arg("interpolation") = py::none(), py::arg("cube_edge") = py::none(),
-      py::arg("strategy") = py::none(), py::arg("joint_norm") = py::none(), kEvaluateDoc);
+      py::arg("strategy") = py::none(), py::arg("joint_norm") = py::none(),
+      py::arg("arm") = py::none(), kEvaluateDoc);
 
   m.def(
       "correct",
       [](const RegistrationModel& model, const py::object& sensor, const py::object& robot,
          const py::object& names, const py::object& configs, const py::object& joints,
          std::optional<int> config, std::optional<std::string> interpolation,
-         std::optional<double> cube_edge) {
+         std::optional<double> cube_edge, std::optional<std::string> arm) {
         CorrectOptions options;
         options.config = config;
+        options.robot = arm_of(arm);
         options.interpolation = interpolation_choice(interpolation, cube_edge);
         PointExtras extras;
         extras.names = names;
@@ -184,7 +201,8 @@ void bind_pipeline(py::module_& m) {
       py::arg("model"), py::arg("sensor"), py::arg("robot") = py::none(), py::kw_only(),
       py::arg("names") = py::none(), py::arg("configs") = py::none(),
       py::arg("joints") = py::none(), py::arg("config") = py::none(),
-      py::arg("interpolation") = py::none(), py::arg("cube_edge") = py::none(), kCorrectDoc);
+      py::arg("interpolation") = py::none(), py::arg("cube_edge") = py::none(),
+      py::arg("arm") = py::none(), kCorrectDoc);
 }
 
 }  // namespace vrreg::python

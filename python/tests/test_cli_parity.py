@@ -93,3 +93,29 @@ def test_field_model_matches_cli_with_predicted_sd(cli, cell, example_cell, tmp_
     assert close(j["predicted_sd_median_mm"], np.median(e.predicted_sd) * MM)
     assert close(j["calibration"]["rms_tre_over_sd"], e.calibration["rms_tre_over_sd"])
     assert vrreg.evaluate(model, cell).predicted_sd is None  # the paper's stencils give none
+
+
+def test_joint_model_with_arm_matches_cli(cli, tmp_path):
+    """The joint-space model from Python (arm=, stored in the model) gives the command line's
+    numbers (--robot), and without an arm it says what is missing."""
+    data = tmp_path / "a1.csv"
+    cli("simulate", "ur5", "A1", "--seed", 2, "-o", data)
+    model_path = tmp_path / "m.json"
+    cli("register", "--fiducials", data, "--sigma-rep-mm", 0.1, "--robot", "ur5", "-o",
+        model_path)
+    j = cli("evaluate", "--model", model_path, "--targets", data, "--interpolation", "joint",
+            "--json")
+    measurements = vrreg.read_measurements(str(data))
+    model = vrreg.register(measurements, sigma_rep=1e-4, arm="ur5").model
+    e = vrreg.evaluate(model, measurements, interpolation="joint")
+    assert j["interpolation"] == e.method == "joint"
+    # The command line's model went through its JSON file (17 significant digits), and the
+    # joint model's least squares amplify that last-digit difference a little.
+    assert close(j["cor_rms_t_mm"], e.cor_rms_t * MM, rtol=1e-9)
+    assert close(j["predicted_sd_median_mm"], np.median(e.predicted_sd) * MM, rtol=1e-9)
+    assert e.cor_rms_t < 0.12e-3  # the noise floor of A1 is ~0.094 mm
+    bare = vrreg.register(measurements, sigma_rep=1e-4).model
+    again = vrreg.evaluate(bare, measurements, interpolation="joint", arm="ur5")
+    assert close(again.cor_rms_t, e.cor_rms_t)
+    with pytest.raises(ValueError, match="robot"):
+        vrreg.evaluate(bare, measurements, interpolation="joint")
