@@ -32,10 +32,11 @@ void validate(const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_
                          (std::isfinite(*options.noise_sd_m) && *options.noise_sd_m >= 0.0),
                      "kriging: noise sd must be finite and >= 0");
   VRREG_THROW_UNLESS(options.exact_limit >= 1 && options.local_neighbours > terms &&
-                         options.fit_subset > terms && options.restarts >= 1 &&
+                         options.fit_subset > terms && options.fit_cluster >= 1 &&
+                         options.restarts >= 1 &&
                          options.max_iterations >= 1,
                      "kriging: exact_limit >= 1, local_neighbours and fit_subset > "
-                         << terms << ", restarts and max_iterations >= 1 required");
+                         << terms << ", fit_cluster, restarts and max_iterations >= 1 required");
   const detail::TrendFrame frame = detail::trend_frame(positions_m);
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(
       detail::trend_basis(positions_m, options.trend_degree, frame));
@@ -123,8 +124,8 @@ KrigingModel KrigingModel::fit(const ConstPoints3Ref& positions_m, const ConstPo
   impl->values_m = values_m;
   impl->options = options;
   impl->frame = detail::trend_frame(positions_m);
-  const std::vector<Eigen::Index> subset =
-      detail::seeded_subset(positions_m.cols(), options.fit_subset, options.subset_seed);
+  const std::vector<Eigen::Index> subset = detail::seeded_cluster_subset(
+      positions_m, options.fit_subset, options.fit_cluster, options.subset_seed);
   Points3 fit_positions(3, static_cast<Eigen::Index>(subset.size()));
   Points3 fit_values(3, fit_positions.cols());
   for (Eigen::Index k = 0; k < fit_positions.cols(); ++k) {

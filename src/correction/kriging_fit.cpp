@@ -10,6 +10,7 @@
 
 #include "bfgs_box.hpp"
 #include "kriging_reml.hpp"
+#include "point_index.hpp"
 
 namespace vrreg::detail {
 namespace kriging_fit {
@@ -46,6 +47,38 @@ std::vector<Eigen::Index> seeded_subset(Eigen::Index n, Eigen::Index size, std::
   order.resize(static_cast<std::size_t>(size));
   std::sort(order.begin(), order.end());
   return order;
+}
+
+std::vector<Eigen::Index> seeded_cluster_subset(const ConstPoints3Ref& positions_m,
+                                                Eigen::Index size, Eigen::Index cluster,
+                                                std::uint64_t seed) {
+  const Eigen::Index n = positions_m.cols();
+  if (size >= n) return seeded_subset(n, size, seed);
+  // Cluster centres in the order of a seeded Fisher-Yates shuffle of all fiducials.
+  std::vector<Eigen::Index> shuffled(static_cast<std::size_t>(n));
+  std::iota(shuffled.begin(), shuffled.end(), Eigen::Index{0});
+  std::uint64_t state = seed;
+  for (std::size_t i = shuffled.size(); i > 1; --i) {
+    const std::size_t pick = kriging_fit::splitmix64(state) % i;
+    std::swap(shuffled[i - 1], shuffled[pick]);
+  }
+  const PointIndex index(positions_m);
+  std::vector<char> taken(static_cast<std::size_t>(n), 0);
+  std::vector<Eigen::Index> out;
+  out.reserve(static_cast<std::size_t>(size));
+  for (const Eigen::Index centre : shuffled) {
+    if (static_cast<Eigen::Index>(out.size()) >= size) break;
+    if (taken[static_cast<std::size_t>(centre)] != 0) continue;
+    for (const Eigen::Index j :
+         index.nearest_k(positions_m.col(centre), static_cast<std::size_t>(cluster))) {
+      if (static_cast<Eigen::Index>(out.size()) >= size) break;
+      if (taken[static_cast<std::size_t>(j)] != 0) continue;
+      taken[static_cast<std::size_t>(j)] = 1;
+      out.push_back(j);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 KrigingAxisFit fit_kriging_axis(const ConstPoints3Ref& positions_m, const Eigen::VectorXd& values,

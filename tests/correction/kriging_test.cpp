@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 
 #include "field_test_support.hpp"
+#include "correction/kriging_fit.hpp"
 #include "correction/kriging_posterior.hpp"
 #include "correction/kriging_reml.hpp"
 #include "vrreg/core/check.hpp"
@@ -124,6 +126,10 @@ TEST(Kriging, RejectsDegenerateInput) {
   values(1, 7) = std::nan("");
   EXPECT_THROW((void)KrigingModel::fit(good, values), InputError);
   EXPECT_THROW((void)KrigingModel::fit(good, Points3::Zero(3, 39)), InputError);
+  KrigingOptions no_cluster;
+  no_cluster.fit_cluster = 0;
+  EXPECT_THROW((void)KrigingModel::fit(good, 1e-4 * Points3::Random(3, 40), no_cluster),
+               InputError);
 }
 
 // Coincident fiducials with different values: the nugget absorbs them.
@@ -159,6 +165,38 @@ TEST(Kriging, FitIsDeterministic) {
   const FieldPrediction b = KrigingModel::fit(p, values, options).predict(p);
   EXPECT_EQ(a.mean_m, b.mean_m);
   EXPECT_EQ(a.sd_m, b.sd_m);
+}
+
+// The hyperparameters' fit subset of a dense grid: clusters of near neighbours, so that the
+// shortest pairs of the grid survive (a uniform subset of 500 of 8000 keeps few of them).
+TEST(Kriging, FitSubsetKeepsTheGridsShortPairs) {
+  Points3 p(3, 8000);
+  for (Eigen::Index i = 0; i < p.cols(); ++i)
+    p.col(i) = 0.01 * Eigen::Vector3d(static_cast<double>(i % 20), static_cast<double>(i / 20 % 20),
+                                      static_cast<double>(i / 400));
+  const std::vector<Eigen::Index> subset = detail::seeded_cluster_subset(p, 500, 64, 1);
+  ASSERT_EQ(subset.size(), 500U);
+  EXPECT_TRUE(std::is_sorted(subset.begin(), subset.end()));
+  EXPECT_EQ(std::adjacent_find(subset.begin(), subset.end()), subset.end());
+  EXPECT_EQ(subset, detail::seeded_cluster_subset(p, 500, 64, 1));
+  EXPECT_NE(subset, detail::seeded_cluster_subset(p, 500, 64, 2));
+  const auto with_a_grid_neighbour = [&](const std::vector<Eigen::Index>& s) {
+    int count = 0;
+    for (const Eigen::Index a : s) {
+      for (const Eigen::Index b : s) {
+        if ((p.col(a) - p.col(b)).norm() < 0.0101 && a != b) {
+          ++count;
+          break;
+        }
+      }
+    }
+    return count;
+  };
+  EXPECT_GT(with_a_grid_neighbour(subset), 450);
+  EXPECT_LT(with_a_grid_neighbour(detail::seeded_subset(8000, 500, 1)), 200);
+  // Fewer fiducials than the subset: all of them, and a cluster of 1 is a uniform draw.
+  EXPECT_EQ(detail::seeded_cluster_subset(p.leftCols(300), 500, 64, 1).size(), 300U);
+  EXPECT_EQ(detail::seeded_cluster_subset(p, 500, 1, 1).size(), 500U);
 }
 
 }  // namespace

@@ -43,8 +43,11 @@ struct KrigingOptions {
   Eigen::Index exact_limit = 2000;
   Eigen::Index local_neighbours = 150;
   /// The hyperparameters are fitted on at most this many fiducials: all of them if there are
-  /// fewer, else a deterministic spatially spread subset (seeded below).
+  /// fewer, else clusters of the `fit_cluster` nearest fiducials around seeded centres (below):
+  /// the clusters keep the short pairs that reveal a short length scale, the spread centres the
+  /// long ones (1: a uniform random subset).
   Eigen::Index fit_subset = 500;
+  Eigen::Index fit_cluster = 64;
   std::uint64_t subset_seed = 1;
   /// Starts of the optimiser (deterministic: length scales at fractions of the extent).
   int restarts = 2;
