@@ -1,9 +1,6 @@
 #include "field_model_cli.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <vector>
 
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"

@@ -17,7 +17,7 @@ struct MarkerOffsetFlags {
   double min_orientation_spread = 0.02;
   double joint_offset_sigma_deg = 0.0;  ///< the robot's joint zero-offset uncertainty
   void add_to(CLI::App& command);
-  /// Throws InputError on --robot without either mode.
+  /// Throws InputError when a marker-offset mode is given without --robot.
   void check() const;
   [[nodiscard]] bool enabled() const { return estimate || !known_mm.empty(); }
 };

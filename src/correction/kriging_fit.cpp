@@ -32,31 +32,14 @@ constexpr std::array<double, 2> kScanNuggets = {0.2, 0.6};
 
 }  // namespace kriging_fit
 
-std::vector<Eigen::Index> seeded_subset(Eigen::Index n, Eigen::Index size, std::uint64_t seed) {
-  std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
-  std::iota(order.begin(), order.end(), Eigen::Index{0});
-  if (size >= n) {
-    return order;
-  }
-  std::uint64_t state = seed;
-  for (Eigen::Index i = 0; i < size; ++i) {
-    const auto span = static_cast<std::uint64_t>(n - i);
-    const auto pick = i + static_cast<Eigen::Index>(kriging_fit::splitmix64(state) % span);
-    std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(pick)]);
-  }
-  order.resize(static_cast<std::size_t>(size));
-  std::sort(order.begin(), order.end());
-  return order;
-}
-
 std::vector<Eigen::Index> seeded_cluster_subset(const ConstPoints3Ref& positions_m,
                                                 Eigen::Index size, Eigen::Index cluster,
                                                 std::uint64_t seed) {
   const Eigen::Index n = positions_m.cols();
-  if (size >= n) return seeded_subset(n, size, seed);
-  // Cluster centres in the order of a seeded Fisher-Yates shuffle of all fiducials.
   std::vector<Eigen::Index> shuffled(static_cast<std::size_t>(n));
   std::iota(shuffled.begin(), shuffled.end(), Eigen::Index{0});
+  if (size >= n) return shuffled;  // all of them, in order
+  // Cluster centres in the order of a seeded Fisher-Yates shuffle of all fiducials.
   std::uint64_t state = seed;
   for (std::size_t i = shuffled.size(); i > 1; --i) {
     const std::size_t pick = kriging_fit::splitmix64(state) % i;

@@ -11,15 +11,12 @@
 
 namespace vrreg::detail {
 
-/// `size` distinct indices of 0..n-1 (all of them if size >= n), increasing, drawn uniformly
-/// by a seeded splitmix64 Fisher-Yates: same seed, same subset on every platform.
-[[nodiscard]] std::vector<Eigen::Index> seeded_subset(Eigen::Index n, Eigen::Index size,
-                                                      std::uint64_t seed);
-
 /// `size` fiducials (all if size >= J) in clusters: each the `cluster` nearest fiducials of a
 /// centre drawn by a seeded shuffle, until `size` are taken. A uniform subset of a dense grid
 /// loses the short pairs that reveal a short length scale (a vertical column of one azimuth);
-/// clusters keep them, and the spread of the centres keeps the long ones.
+/// clusters keep them, and the spread of the centres keeps the long ones. The centres come
+/// from a splitmix64 Fisher-Yates shuffle: same seed, same subset on every platform; cluster 1
+/// is a uniform draw.
 [[nodiscard]] std::vector<Eigen::Index> seeded_cluster_subset(const ConstPoints3Ref& positions_m,
                                                               Eigen::Index size,
                                                               Eigen::Index cluster,

@@ -193,7 +193,7 @@ TEST(Kriging, FitSubsetKeepsTheGridsShortPairs) {
     return count;
   };
   EXPECT_GT(with_a_grid_neighbour(subset), 450);
-  EXPECT_LT(with_a_grid_neighbour(detail::seeded_subset(8000, 500, 1)), 200);
+  EXPECT_LT(with_a_grid_neighbour(detail::seeded_cluster_subset(p, 500, 1, 1)), 200);  // uniform
   // Fewer fiducials than the subset: all of them, and a cluster of 1 is a uniform draw.
   EXPECT_EQ(detail::seeded_cluster_subset(p.leftCols(300), 500, 64, 1).size(), 300U);
   EXPECT_EQ(detail::seeded_cluster_subset(p, 500, 1, 1).size(), 500U);
