@@ -20,9 +20,12 @@ struct FittedField {
   InterpolationMethod method = InterpolationMethod::kTrilinear;  ///< never kAuto
   std::unique_ptr<FieldModel> model;
   std::optional<CrossValidation> cross_validation;  ///< the table, when `auto` chose
-  /// Used as each target's sigma_pred when the model has no uncertainty of its own: the
-  /// method's cross-validated RMS (3D) [m].
+  /// The method's cross-validated RMS (3D) over all fiducials [m].
   double cv_rms_m = 0.0;
+  /// Per fiducial, its held-out squared error (3D) [m^2], NaN where it was not predicted; empty
+  /// when the model has its own uncertainty. A target's sigma_pred, when the model has none of
+  /// its own, is the RMS of these over its 16 nearest fiducials (local_rms).
+  Eigen::VectorXd cv_squared_error_m2;
 };
 
 /// Fits `method` (a field model or kAuto) on `data`.
