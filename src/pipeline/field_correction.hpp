@@ -23,8 +23,9 @@ struct FittedField {
   /// The method's cross-validated RMS (3D) over all fiducials [m].
   double cv_rms_m = 0.0;
   /// Per fiducial, its held-out squared error (3D) [m^2], NaN where it was not predicted; empty
-  /// when the model has its own uncertainty. A target's sigma_pred, when the model has none of
-  /// its own, is the RMS of these over its 16 nearest fiducials (local_rms).
+  /// when the model has its own uncertainty. A target's sigma_pred, when a position model has
+  /// none of its own, is the RMS of these over its 16 nearest fiducials (local_rms); the joint
+  /// model's is cv_rms_m.
   Eigen::VectorXd cv_squared_error_m2;
 };
 
