@@ -14,6 +14,14 @@ namespace {
 
 constexpr int kLocalCvNeighbours = 16;
 
+// Whether a target's sigma_pred is the RMS of its nearest fiducials' held-out errors (else one
+// global CV RMS). The errors vary over the volume, and one global RMS was pessimistic for the
+// targets (simulated A1, trilinear: RMS of TRE/sd 0.80 with one global CV RMS, 0.84 local). Not
+// for the joint model: its held-out errors depend on which joint angles the training fiducials
+// share with the held-out one, not on where it is, and near a target they can be much smaller
+// than at it (27-fiducial cube, 10 seeds: RMS of TRE/sd 0.43 global, 2.95 local).
+bool sd_is_local(InterpolationMethod method) { return method != InterpolationMethod::kJoint; }
+
 }  // namespace
 
 FieldData field_data(const RegistrationModel& model,
@@ -66,7 +74,7 @@ FittedField fit_field(InterpolationMethod method, const FieldData& data) {
     for (const CrossValidationRow& row : out.cross_validation->rows) {
       if (row.method == out.method) {
         out.cv_rms_m = row.rms_m;
-        out.cv_squared_error_m2 = row.squared_error_m2;
+        if (sd_is_local(out.method)) out.cv_squared_error_m2 = row.squared_error_m2;
       }
     }
     return out;
@@ -84,7 +92,7 @@ FittedField fit_field(InterpolationMethod method, const FieldData& data) {
                      to_string(method) << " interpolation cannot be used on these fiducials: "
                                        << row.note);
   out.cv_rms_m = row.rms_m;
-  out.cv_squared_error_m2 = row.squared_error_m2;
+  if (sd_is_local(method)) out.cv_squared_error_m2 = row.squared_error_m2;
   return out;
 }
 
@@ -113,16 +121,10 @@ TargetCorrection correct_with_field(const FittedField& field, const FieldData& d
   out.corrected_sensor_m.resize(3, n);
   out.corrected_robot_m.resize(3, n);
   out.predicted_sd_m.resize(n);
-  // A position model without its own uncertainty: the held-out errors of the target's 16
-  // nearest fiducials (48 squared components, the RMS to about +-10 %). The error is not the
-  // same everywhere, and one global RMS was pessimistic for the targets (simulated A1,
-  // trilinear: RMS of TRE/sd 0.80 with one global CV RMS, 0.84 local). Not for the joint
-  // model: its held-out errors depend on which joint angles the training fiducials share with
-  // the held-out one, not on where it is, and near a target they can be much smaller than at it
-  // (27-fiducial cube, 10 seeds: RMS of TRE/sd 0.43 global, 2.95 local).
+  // Per-fiducial held-out errors (a position model, see FittedField): those of the target's 16
+  // nearest fiducials (48 squared components, the RMS to about +-10 %).
   Eigen::VectorXd local_sd_m;
-  if (p.sd_m.size() != n && field.method != InterpolationMethod::kJoint &&
-      field.cv_squared_error_m2.size() == data.size()) {
+  if (p.sd_m.size() != n && field.cv_squared_error_m2.size() == data.size()) {
     local_sd_m = local_rms(data.registered_robot_m, field.cv_squared_error_m2,
                            out.uncorrected_robot_m, kLocalCvNeighbours);
   }

@@ -22,10 +22,9 @@ struct FittedField {
   std::optional<CrossValidation> cross_validation;  ///< the table, when `auto` chose
   /// The method's cross-validated RMS (3D) over all fiducials [m].
   double cv_rms_m = 0.0;
-  /// Per fiducial, its held-out squared error (3D) [m^2], NaN where it was not predicted; empty
-  /// when the model has its own uncertainty. A target's sigma_pred, when a position model has
-  /// none of its own, is the RMS of these over its 16 nearest fiducials (local_rms); the joint
-  /// model's is cv_rms_m.
+  /// Per fiducial, its held-out squared error (3D) [m^2], NaN where it was not predicted: a
+  /// target's sigma_pred is the RMS of these over its 16 nearest fiducials (local_rms). Empty
+  /// when the model has its own uncertainty (kriging) or uses cv_rms_m for every target (joint).
   Eigen::VectorXd cv_squared_error_m2;
 };
 
