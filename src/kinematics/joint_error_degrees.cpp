@@ -20,25 +20,14 @@ constexpr double kDegreeGain = 1e-3;
 constexpr int kCandidateDegrees[] = {0,  1,  2,  3,  4,  5,  6,  8,  10, 12, 14,
                                      16, 20, 24, 28, 32, 36, 40, 48, 56, 60};
 
-// Joint values closer than this are one sample of that joint's error function.
-constexpr double kSameAngleRad = 1e-6;
-
-// The largest degree each joint's function may take: a third of its distinct sampled angles. On a grid
-// many fiducials share a joint's angle (a column of the grid shares q1); a polynomial through
+// The largest degree each joint's function may take: a third of its distinct sampled angles. On a
+// grid many fiducials share a joint's angle (a column of the grid shares q1); a polynomial through
 // those few values is free in between, where targets sit, and cross-validation on the fiducials
 // cannot see it because held-out fiducials share the training fiducials' angles.
 std::vector<int> degree_caps(const std::vector<JointVector>& q_rad, int n_joints) {
   std::vector<int> caps(static_cast<std::size_t>(n_joints), 0);
   for (int i = 0; i < n_joints; ++i) {
-    std::vector<double> values;
-    values.reserve(q_rad.size());
-    for (const JointVector& q : q_rad) values.push_back(q(i));
-    std::sort(values.begin(), values.end());
-    int distinct = values.empty() ? 0 : 1;
-    for (std::size_t k = 1; k < values.size(); ++k) {
-      if (values[k] - values[k - 1] > kSameAngleRad) ++distinct;
-    }
-    caps[static_cast<std::size_t>(i)] = std::max(0, (distinct - 1) / 3);
+    caps[static_cast<std::size_t>(i)] = joint_degree_cap(distinct_joint_values(q_rad, i));
   }
   return caps;
 }
@@ -137,6 +126,18 @@ FoldGrams fold_grams(const JointErrorModel::State& full, const std::vector<Joint
 }
 
 }  // namespace
+
+int distinct_joint_values(const std::vector<JointVector>& q_rad, int joint) {
+  std::vector<double> values;
+  values.reserve(q_rad.size());
+  for (const JointVector& q : q_rad) values.push_back(q(joint));
+  std::sort(values.begin(), values.end());
+  int distinct = values.empty() ? 0 : 1;
+  for (std::size_t k = 1; k < values.size(); ++k) {
+    if (values[k] - values[k - 1] > kSameAngleRad) ++distinct;
+  }
+  return distinct;
+}
 
 JointDegreeChoice choose_joint_degrees(const JointErrorModel::State& s,
                                        const std::vector<JointVector>& q_rad,

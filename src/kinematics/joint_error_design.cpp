@@ -1,6 +1,7 @@
 #include "joint_error_design.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "vrreg/core/random.hpp"
@@ -34,7 +35,10 @@ int JointErrorLayout::n_trend_terms() const {
   constexpr int kTerms[] = {0, 1, 4, 10};
   return kTerms[trend_degree + 1];
 }
-int JointErrorLayout::n_columns() const { return trend_column() + 3 * n_trend_terms(); }
+int JointErrorLayout::periodic_column() const { return trend_column() + 3 * n_trend_terms(); }
+int JointErrorLayout::n_columns() const {
+  return periodic_column() + 2 * static_cast<int>(periodic.size());
+}
 
 void legendre_values(double u, int degree, double* out) {
   out[0] = 1.0;
@@ -70,6 +74,12 @@ JointVector joint_error_rad(const JointErrorModel::State& s, const Eigen::Vector
     legendre_values(joint_unit(s, i, q_rad(i)), degree, p);
     const int c = s.layout.joint_column(i);
     for (int k = 0; k <= degree; ++k) dq(i) += x(c + k) * p[k];
+  }
+  int c = s.layout.periodic_column();
+  for (const JointPeriodicTerm& t : s.layout.periodic) {
+    const double w = t.omega_per_rad * q_rad(t.joint);
+    dq(t.joint) += x(c) * std::sin(w) + x(c + 1) * std::cos(w);
+    c += 2;
   }
   return dq;
 }
@@ -137,6 +147,13 @@ void design_rows(const JointErrorModel::State& s, const SerialChain& chain_x,
     for (int axis = 0; axis < 3; ++axis) {
       for (int t = 0; t < nt; ++t) rows(axis, l.trend_column() + axis * nt + t) = m[t];
     }
+  }
+  int c = l.periodic_column();
+  for (const JointPeriodicTerm& t : l.periodic) {
+    const double w = t.omega_per_rad * q_rad(t.joint);
+    rows.col(c) = d.d_joint.col(t.joint) * std::sin(w);
+    rows.col(c + 1) = d.d_joint.col(t.joint) * std::cos(w);
+    c += 2;
   }
 }
 

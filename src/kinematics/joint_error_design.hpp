@@ -7,6 +7,7 @@
 //   per DH row i (dh_deltas): delta a_i [m], delta d_i [m], delta alpha_i [rad]
 //   marker (marker_offset): delta p_flange_marker x, y, z [m]
 //   trend: for axis x, y, z the monomials of (p_nominal - centre) / scale, 1, 4 or 10 each [m]
+//   per periodic term m: s_m, c_m, amplitudes of sin and cos (omega_m q_joint) in dq_joint [rad]
 #include <Eigen/Core>
 #include <utility>
 #include <vector>
@@ -22,6 +23,7 @@ struct JointErrorLayout {
   bool dh = true;
   bool marker = true;
   int trend_degree = 2;  ///< -1 none, 0, 1, 2
+  std::vector<JointPeriodicTerm> periodic;
 
   [[nodiscard]] int n_joints() const { return static_cast<int>(degrees.size()); }
   [[nodiscard]] int joint_column(int joint) const;  ///< first column of joint `joint`
@@ -29,6 +31,7 @@ struct JointErrorLayout {
   [[nodiscard]] int marker_column() const;
   [[nodiscard]] int trend_column() const;
   [[nodiscard]] int n_trend_terms() const;  ///< monomials per axis
+  [[nodiscard]] int periodic_column() const;  ///< first column of the periodic terms
   [[nodiscard]] int n_columns() const;
 };
 

@@ -29,6 +29,14 @@ void JointErrorModelOptions::validate() const {
                          relative_rank_tolerance < 1.0,
                      "joint error model: relative_rank_tolerance must be in (0, 1), got "
                          << relative_rank_tolerance);
+  VRREG_THROW_UNLESS(max_periodic_terms >= 0 && max_periodic_terms <= 16,
+                     "joint error model: max_periodic_terms must be in 0..16, got "
+                         << max_periodic_terms);
+  for (const JointPeriodicTerm& t : periodic_terms) {
+    VRREG_THROW_UNLESS(std::isfinite(t.omega_per_rad) && t.omega_per_rad > 0.0,
+                       "joint error model: a periodic term's frequency must be finite and > 0, got "
+                           << t.omega_per_rad << " per rad");
+  }
   VRREG_THROW_UNLESS(cv_folds >= 2, "joint error model: cv_folds must be >= 2, got " << cv_folds);
 }
 
@@ -70,6 +78,11 @@ JointErrorModel::State make_joint_error_state(
       options.joint_degrees.empty() || static_cast<int>(options.joint_degrees.size()) == n,
       "joint error model: " << options.joint_degrees.size() << " joint degrees for " << n
                             << " joints");
+  for (const JointPeriodicTerm& t : options.periodic_terms) {
+    VRREG_THROW_UNLESS(t.joint >= 0 && t.joint < n, "joint error model: a periodic term of joint "
+                                                        << t.joint + 1 << " on a robot with " << n
+                                                        << " joints");
+  }
   VRREG_THROW_UNLESS(error_robot_m.allFinite(), "joint error model: non-finite observed error");
   VRREG_THROW_UNLESS(!p_flange_marker_m || p_flange_marker_m->allFinite(),
                      "joint error model: non-finite marker offset");

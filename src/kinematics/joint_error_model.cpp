@@ -26,11 +26,13 @@ JointErrorModel JointErrorModel::fit(const SerialChain& nominal,
       make_joint_error_state(nominal, q_rad, error_robot_m, options, p_flange_marker_m));
   double selection_cv = std::numeric_limits<double>::quiet_NaN();
   if (options.joint_degrees.empty()) {
-    const JointDegreeChoice choice = choose_joint_degrees(*s, q_rad, error_robot_m, options);
+    const JointLayoutChoice choice = choose_joint_layout(*s, q_rad, error_robot_m, options);
     s->layout.degrees = choice.degrees;
+    s->layout.periodic = choice.periodic;
     selection_cv = choice.cv_rms_m;
   } else {
     s->layout.degrees = options.joint_degrees;
+    s->layout.periodic = options.periodic_terms;
   }
   const int rank = fit_joint_error_parameters(*s, q_rad, error_robot_m, options);
   const SerialChain chain_x = perturbed_chain(*s, s->x);
@@ -65,6 +67,10 @@ double JointErrorModel::residual_rms_m() const {
 
 const Eigen::VectorXd& JointErrorModel::parameters() const { return state_->x; }
 
+const std::vector<JointPeriodicTerm>& JointErrorModel::periodic_terms() const {
+  return state_->layout.periodic;
+}
+
 double joint_error_cv_rms_m(const SerialChain& nominal, const std::vector<JointVector>& q_rad,
                             const ConstPoints3Ref& error_robot_m,
                             const JointErrorModelOptions& options,
@@ -73,7 +79,9 @@ double joint_error_cv_rms_m(const SerialChain& nominal, const std::vector<JointV
   if (fixed.joint_degrees.empty()) {
     const JointErrorModel::State s =
         make_joint_error_state(nominal, q_rad, error_robot_m, options, p_flange_marker_m);
-    fixed.joint_degrees = choose_joint_degrees(s, q_rad, error_robot_m, options).degrees;
+    const JointLayoutChoice choice = choose_joint_layout(s, q_rad, error_robot_m, options);
+    fixed.joint_degrees = choice.degrees;
+    fixed.periodic_terms = choice.periodic;
   }
   const int n = static_cast<int>(q_rad.size());
   VRREG_THROW_UNLESS(n >= options.cv_folds, "joint error model: " << n << " fiducials for "

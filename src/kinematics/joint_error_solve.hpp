@@ -33,6 +33,13 @@ int fit_joint_error_parameters(JointErrorModel::State& s, const std::vector<Join
 Eigen::Vector3d predict_joint_error_m(const JointErrorModel::State& s, const SerialChain& chain_x,
                                       const JointRef& q_rad);
 
+/// Joint values closer than this are one sample of that joint's error function.
+constexpr double kSameAngleRad = 1e-6;
+/// How many distinct values (kSameAngleRad apart) joint `joint` takes over `q_rad`.
+int distinct_joint_values(const std::vector<JointVector>& q_rad, int joint);
+/// The largest Legendre degree of a joint sampled at `n_distinct` angles: a third of them.
+inline int joint_degree_cap(int n_distinct) { return n_distinct > 1 ? (n_distinct - 1) / 3 : 0; }
+
 /// Degrees per joint by K-fold CV of the first-order model (ridge solves of the fold Gram
 /// matrices, a coordinate search over the degrees), and the best CV RMS [m].
 struct JointDegreeChoice {
@@ -43,5 +50,25 @@ JointDegreeChoice choose_joint_degrees(const JointErrorModel::State& s,
                                        const std::vector<JointVector>& q_rad,
                                        const ConstPoints3Ref& error_robot_m,
                                        const JointErrorModelOptions& options);
+
+/// Candidate periodic terms (joint_error_periodic.cpp): a greedy periodogram of what a smooth
+/// model (low Legendre degrees, DH, marker, trend, the terms found so far) leaves at the
+/// fiducials, each term kept while its drop of the residual is beyond what noise would give.
+std::vector<JointPeriodicTerm> find_periodic_terms(const JointErrorModel::State& s,
+                                                   const std::vector<JointVector>& q_rad,
+                                                   const ConstPoints3Ref& error_robot_m,
+                                                   const JointErrorModelOptions& options);
+
+/// The layout of an automatic fit: degrees by CV (choose_joint_degrees), with the periodic terms
+/// of find_periodic_terms when they lower the CV RMS (or the given terms), and its CV RMS [m].
+struct JointLayoutChoice {
+  std::vector<int> degrees;
+  std::vector<JointPeriodicTerm> periodic;
+  double cv_rms_m = 0.0;
+};
+JointLayoutChoice choose_joint_layout(const JointErrorModel::State& s,
+                                      const std::vector<JointVector>& q_rad,
+                                      const ConstPoints3Ref& error_robot_m,
+                                      const JointErrorModelOptions& options);
 
 }  // namespace vrreg::kinematics

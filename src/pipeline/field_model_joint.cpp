@@ -31,6 +31,7 @@ class JointFieldModel final : public FieldModel {
   [[nodiscard]] std::unique_ptr<FieldModel> refit(const FieldData& subset) const override {
     kinematics::JointErrorModelOptions options;
     options.joint_degrees = model_.joint_degrees();
+    options.periodic_terms = model_.periodic_terms();
     return fit_joint(subset, options);
   }
 
@@ -52,7 +53,12 @@ class JointFieldModel final : public FieldModel {
     std::ostringstream out;
     out << "joint-space model: per-joint Legendre angle errors (degrees";
     for (const int d : model_.joint_degrees()) out << ' ' << d;
-    out << "), DH and marker deltas, quadratic trend; rank " << model_.rank() << " of "
+    out << ")";
+    for (const kinematics::JointPeriodicTerm& t : model_.periodic_terms()) {
+      out << ", joint " << t.joint + 1 << " cyclic error of period "
+          << 360.0 / t.omega_per_rad << " deg";
+    }
+    out << ", DH and marker deltas, quadratic trend; rank " << model_.rank() << " of "
         << model_.n_parameters() << " parameters";
     return out.str();
   }

@@ -10,6 +10,7 @@
 //
 // e(q) = p_actual(q + dq(q)) - p_nominal(q) + trend(p_nominal(q)), with
 //   dq_i(q) = sum_k c_ik P_k(u_i(q_i))   (k = 0: the joint offset; u_i maps the range to [-1, 1])
+//             + sum_m (s_m sin(w_m q_i) + c_m cos(w_m q_i))   (periodic terms of joint i, if any)
 //   p_actual: the nominal DH table plus deltas of a, d, alpha per row and a marker offset delta,
 //   trend: 10 monomials of the nominal position per axis (absorbs a slightly wrong registration).
 // Without Gauss-Newton iterations the model is its first-order (linear) expansion at zero.
@@ -25,12 +26,24 @@
 
 namespace vrreg::kinematics {
 
+/// A cyclic angle error of one joint, s sin(omega q) + c cos(omega q) [rad], e.g. a gear's or a
+/// harmonic drive's transmission error with period 2 pi / omega. The amplitudes s, c are fitted.
+struct JointPeriodicTerm {
+  int joint = 0;               ///< 0-based joint index
+  double omega_per_rad = 0.0;  ///< angular frequency in the joint angle [1/rad], > 0
+};
+
 /// What the model contains and how it is fitted.
 struct JointErrorModelOptions {
   /// Legendre degree of each joint's angle-error function (0: a constant offset only). Empty:
   /// chosen per joint by K-fold cross-validation among 0..max_joint_degree.
   std::vector<int> joint_degrees;
   int max_joint_degree = 40;  ///< largest degree the automatic choice tries
+  /// Periodic terms of the joint-angle errors. Empty: found from the fiducials when the degrees
+  /// are chosen automatically (a periodogram of what a smooth model leaves, at most
+  /// max_periodic_terms, the set kept only if it lowers the cross-validated RMS).
+  std::vector<JointPeriodicTerm> periodic_terms;
+  int max_periodic_terms = 6;  ///< 0: no periodic terms unless given
   bool dh_deltas = true;      ///< a, d, alpha deltas of every DH row
   bool marker_offset = true;  ///< a 3-vector delta of the marker's flange offset
   int trend_degree = 2;  ///< Cartesian trend per axis: -1 none, 0 constant, 1 linear, 2 quadratic
@@ -77,6 +90,8 @@ class JointErrorModel {
   [[nodiscard]] int n_parameters() const { return static_cast<int>(parameters().size()); }
   /// The Legendre degree of each joint's function (given or chosen).
   [[nodiscard]] const std::vector<int>& joint_degrees() const { return degrees_; }
+  /// The periodic terms of the joint-angle errors (given or found).
+  [[nodiscard]] const std::vector<JointPeriodicTerm>& periodic_terms() const;
   /// First-order K-fold CV RMS of the degree choice [m]; NaN when degrees were given.
   [[nodiscard]] double selection_cv_rms_m() const { return selection_cv_rms_m_; }
   /// The fitted parameters in the unscaled units (rad, m), layout documented in the source.

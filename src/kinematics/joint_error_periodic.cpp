@@ -1,0 +1,236 @@
+// Periodic joint-angle error terms of the joint-space error model, found from the fiducials: a
+// greedy periodogram (least squares on a sine and a cosine, as Lomb-Scargle) of what a smooth
+// model leaves. A transmission's cyclic error (gear mesh, harmonic drive) has a period far
+// shorter than the joint's travel: a Legendre series needs ~2 degrees per period for it, and
+// between sparse samples of the joint angle (a grid's columns share q1) such a polynomial is
+// free, while a sinusoid of the right frequency is pinned down by a few irregular samples.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "joint_error_solve.hpp"
+
+namespace vrreg::kinematics {
+namespace {
+
+// The smooth model the periodogram searches beyond: Legendre degree per joint (at most the
+// degree choice's cap), with DH, marker, trend and the terms so far.
+constexpr int kSmoothDegree = 4;
+// Frequency grid step: the phase of a candidate moves by 2 pi / kOversampling over the range, a
+// quarter of a peak's main lobe (the golden-section search then finds its top).
+constexpr int kOversampling = 4;
+// At most this many frequencies per joint: periods down to range / 512; shorter ones are not
+// searched on a densely sampled joint.
+constexpr int kMaxCandidates = 2048;
+// Chance that noise alone would pass the acceptance test anywhere on the whole grid.
+constexpr double kFalseAlarm = 1e-3;
+// A joint sampled at fewer distinct angles is not searched: a sinusoid has 3 unknowns.
+constexpr int kMinDistinctAngles = 8;
+// Golden-section steps refining the best grid frequency within one grid step.
+constexpr int kRefineSteps = 40;
+// The periodic terms must lower the CV RMS by this fraction to be kept (as a higher degree).
+constexpr double kPeriodicGain = 1e-3;
+
+struct SmoothFit {
+  Eigen::MatrixXd design;         // 3 J x columns at x = 0
+  std::vector<int> joint_column;  // each joint's degree-0 column: its Jacobian column
+  Eigen::VectorXd residual;       // e - A x
+  double sigma2 = 0.0;            // |residual|^2 / (3 J - rank)
+  bool ok = false;
+};
+
+SmoothFit fit_smooth(const JointErrorModel::State& s, const std::vector<JointVector>& q_rad,
+                     const Eigen::VectorXd& e, const JointErrorModelOptions& options,
+                     const std::vector<int>& distinct,
+                     const std::vector<JointPeriodicTerm>& terms) {
+  JointErrorModel::State t = s;
+  t.layout.degrees.clear();
+  for (const int d : distinct)
+    t.layout.degrees.push_back(std::min(kSmoothDegree, joint_degree_cap(d)));
+  t.layout.periodic = terms;
+  SmoothFit out;
+  for (int i = 0; i < t.layout.n_joints(); ++i)
+    out.joint_column.push_back(t.layout.joint_column(i));
+  out.design = design_matrix(t, Eigen::VectorXd::Zero(t.layout.n_columns()), q_rad);
+  const std::vector<Eigen::Index> cols =
+      independent_columns(out.design, options.relative_rank_tolerance);
+  const auto dof = e.size() - static_cast<Eigen::Index>(cols.size());
+  if (dof <= 0) return out;
+  out.residual = e - out.design * solve_columns(out.design, cols, e);
+  out.sigma2 = out.residual.squaredNorm() / static_cast<double>(dof);
+  out.ok = out.sigma2 > 0.0;
+  return out;
+}
+
+// Per fiducial: g_j . r_j and |g_j|^2 of the joint's Jacobian column g and the residual r.
+struct JointSums {
+  std::vector<double> q;   // the joint's angle [rad]
+  std::vector<double> gr;  // g_j . r_j
+  std::vector<double> gg;  // |g_j|^2
+};
+
+// The residual drop of a least-squares fit of the residual on g sin(w q), g cos(w q).
+double drop(const JointSums& j, double omega) {
+  double ar = 0.0, br = 0.0, aa = 0.0, bb = 0.0, ab = 0.0;
+  for (std::size_t k = 0; k < j.q.size(); ++k) {
+    const double u = std::sin(omega * j.q[k]), v = std::cos(omega * j.q[k]);
+    ar += j.gr[k] * u;
+    br += j.gr[k] * v;
+    aa += j.gg[k] * u * u;
+    bb += j.gg[k] * v * v;
+    ab += j.gg[k] * u * v;
+  }
+  const double det = aa * bb - ab * ab;
+  if (!(det > 1e-12 * aa * bb)) return 0.0;  // the two columns are (nearly) one
+  return (bb * ar * ar - 2.0 * ab * ar * br + aa * br * br) / det;
+}
+
+struct Peak {
+  double drop = 0.0;
+  double omega = 0.0;
+};
+
+// The grid's highest peak, sines and cosines stepped by rotation (exact again every 256 steps).
+Peak scan(const JointSums& j, double omega_lo, double step, int n_steps) {
+  const std::size_t n = j.q.size();
+  std::vector<double> s(n), c(n), ds(n), dc(n);
+  Peak best;
+  for (int k = 0; k < n_steps; ++k) {
+    const double omega = omega_lo + k * step;
+    if (k % 256 == 0) {
+      for (std::size_t m = 0; m < n; ++m) {
+        s[m] = std::sin(omega * j.q[m]);
+        c[m] = std::cos(omega * j.q[m]);
+        ds[m] = std::sin(step * j.q[m]);
+        dc[m] = std::cos(step * j.q[m]);
+      }
+    }
+    double ar = 0.0, br = 0.0, aa = 0.0, bb = 0.0, ab = 0.0;
+    for (std::size_t m = 0; m < n; ++m) {
+      ar += j.gr[m] * s[m];
+      br += j.gr[m] * c[m];
+      aa += j.gg[m] * s[m] * s[m];
+      bb += j.gg[m] * c[m] * c[m];
+      ab += j.gg[m] * s[m] * c[m];
+      const double s_next = s[m] * dc[m] + c[m] * ds[m];
+      c[m] = c[m] * dc[m] - s[m] * ds[m];
+      s[m] = s_next;
+    }
+    const double det = aa * bb - ab * ab;
+    if (!(det > 1e-12 * aa * bb)) continue;
+    const double d = (bb * ar * ar - 2.0 * ab * ar * br + aa * br * br) / det;
+    if (d > best.drop) best = {d, omega};
+  }
+  return best;
+}
+
+// Golden-section search for the highest drop within one grid step of `omega`.
+Peak refine(const JointSums& j, Peak peak, double step) {
+  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+  double lo = peak.omega - step, hi = peak.omega + step;
+  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
+  double f1 = drop(j, x1), f2 = drop(j, x2);
+  for (int it = 0; it < kRefineSteps; ++it) {
+    if (f1 > f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - ratio * (hi - lo);
+      f1 = drop(j, x1);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + ratio * (hi - lo);
+      f2 = drop(j, x2);
+    }
+  }
+  const double omega = f1 > f2 ? x1 : x2;
+  const double d = std::max(f1, f2);
+  return d > peak.drop ? Peak{d, omega} : peak;
+}
+
+}  // namespace
+
+std::vector<JointPeriodicTerm> find_periodic_terms(const JointErrorModel::State& s,
+                                                   const std::vector<JointVector>& q_rad,
+                                                   const ConstPoints3Ref& error_robot_m,
+                                                   const JointErrorModelOptions& options) {
+  const int n_joints = s.nominal.n_joints();
+  const auto n_fid = q_rad.size();
+  const Points3 e_points = error_robot_m;
+  const Eigen::Map<const Eigen::VectorXd> e(e_points.data(), 3 * e_points.cols());
+  std::vector<int> distinct;
+  for (int i = 0; i < n_joints; ++i) distinct.push_back(distinct_joint_values(q_rad, i));
+  std::vector<JointPeriodicTerm> terms;
+  while (static_cast<int>(terms.size()) < options.max_periodic_terms) {
+    const SmoothFit fit = fit_smooth(s, q_rad, e, options, distinct, terms);
+    if (!fit.ok) break;
+    Peak best;
+    int best_joint = -1;
+    int n_candidates = 0;
+    for (int i = 0; i < n_joints; ++i) {
+      const double range = s.q_hi_rad(i) - s.q_lo_rad(i);
+      const int n_angles = distinct[static_cast<std::size_t>(i)];
+      if (!(range > 0.0) || n_angles < kMinDistinctAngles) continue;
+      // From one period over the range to the mean Nyquist rate of the distinct angles.
+      const double step = 2.0 * std::numbers::pi / (kOversampling * range);
+      const double omega_lo = 2.0 * std::numbers::pi / range;
+      const double omega_hi = std::numbers::pi * (n_angles - 1) / range;
+      const int n_steps =
+          std::min(kMaxCandidates, static_cast<int>((omega_hi - omega_lo) / step) + 1);
+      if (n_steps < 1) continue;
+      JointSums sums;
+      const int column = fit.joint_column[static_cast<std::size_t>(i)];
+      for (std::size_t j = 0; j < n_fid; ++j) {
+        const auto r = static_cast<Eigen::Index>(3 * j);
+        const Eigen::Vector3d g = fit.design.block<3, 1>(r, column);
+        sums.q.push_back(q_rad[j](i));
+        sums.gr.push_back(g.dot(fit.residual.segment<3>(r)));
+        sums.gg.push_back(g.squaredNorm());
+      }
+      n_candidates += n_steps;
+      Peak peak = scan(sums, omega_lo, step, n_steps);
+      if (peak.drop <= 0.0) continue;
+      peak = refine(sums, peak, step);
+      if (peak.drop > best.drop) {
+        best = peak;
+        best_joint = i;
+      }
+    }
+    if (best_joint < 0) break;
+    // Noise alone: drop / sigma^2 ~ chi^2 with 2 degrees of freedom at each candidate, so the
+    // largest of M exceeds 2 ln(M / alpha) with probability ~alpha.
+    const double threshold = 2.0 * std::log(std::max(1, n_candidates) / kFalseAlarm);
+    if (!(best.drop > threshold * fit.sigma2)) break;
+    terms.push_back({best_joint, best.omega});
+  }
+  return terms;
+}
+
+JointLayoutChoice choose_joint_layout(const JointErrorModel::State& s,
+                                      const std::vector<JointVector>& q_rad,
+                                      const ConstPoints3Ref& error_robot_m,
+                                      const JointErrorModelOptions& options) {
+  JointErrorModel::State t = s;
+  if (!options.periodic_terms.empty()) {
+    t.layout.periodic = options.periodic_terms;
+    const JointDegreeChoice c = choose_joint_degrees(t, q_rad, error_robot_m, options);
+    return {c.degrees, options.periodic_terms, c.cv_rms_m};
+  }
+  t.layout.periodic.clear();
+  const JointDegreeChoice plain = choose_joint_degrees(t, q_rad, error_robot_m, options);
+  JointLayoutChoice out{plain.degrees, {}, plain.cv_rms_m};
+  if (options.max_periodic_terms == 0) return out;
+  const std::vector<JointPeriodicTerm> terms =
+      find_periodic_terms(t, q_rad, error_robot_m, options);
+  if (terms.empty()) return out;
+  t.layout.periodic = terms;
+  const JointDegreeChoice with = choose_joint_degrees(t, q_rad, error_robot_m, options);
+  if (with.cv_rms_m < plain.cv_rms_m * (1.0 - kPeriodicGain)) {
+    out = {with.degrees, terms, with.cv_rms_m};
+  }
+  return out;
+}
+
+}  // namespace vrreg::kinematics
