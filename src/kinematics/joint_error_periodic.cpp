@@ -26,8 +26,13 @@ constexpr int kMaxCandidates = 2048;
 constexpr double kFalseAlarm = 1e-3;
 // A joint sampled at fewer distinct angles is not searched: a sinusoid has 3 unknowns.
 constexpr int kMinDistinctAngles = 8;
-// Golden-section steps refining the best grid frequency within one grid step.
-constexpr int kRefineSteps = 40;
+// Golden-section steps refining the best grid frequency within one grid step (bracket 2 step x
+// 0.618^24 < step / 4096), and the frequency's resolution after it: rounded to step / 4096, far
+// finer than its statistical uncertainty, so that inputs equal to the last digits (a model read
+// back from its JSON file) give the same frequency, not the last steps of the search's
+// comparisons flipped.
+constexpr int kRefineSteps = 24;
+constexpr double kFrequencyResolution = 1.0 / 4096.0;
 // The periodic terms must lower the CV RMS by this fraction to be kept (as a higher degree).
 constexpr double kPeriodicGain = 1e-3;
 
@@ -145,8 +150,9 @@ Peak refine(const JointSums& j, Peak peak, double step) {
       f2 = drop(j, x2);
     }
   }
-  const double omega = f1 > f2 ? x1 : x2;
-  const double d = std::max(f1, f2);
+  const double quantum = kFrequencyResolution * step;
+  const double omega = quantum * std::round((f1 > f2 ? x1 : x2) / quantum);
+  const double d = drop(j, omega);
   return d > peak.drop ? Peak{d, omega} : peak;
 }
 

@@ -2,6 +2,7 @@
 // interface. It models e = y_observed - y_nominal in the robot frame as a function of the joints;
 // a corrected target is R X + tau - e(q), i.e. the sensor-frame correction -R' e / s.
 #include <algorithm>
+#include <iomanip>
 #include <memory>
 #include <sstream>
 
@@ -54,9 +55,11 @@ class JointFieldModel final : public FieldModel {
     out << "joint-space model: per-joint Legendre angle errors (degrees";
     for (const int d : model_.joint_degrees()) out << ' ' << d;
     out << ")";
+    const char* sep = ", cyclic errors (period): ";
     for (const kinematics::JointPeriodicTerm& t : model_.periodic_terms()) {
-      out << ", joint " << t.joint + 1 << " cyclic error of period "
+      out << sep << "joint " << t.joint + 1 << " " << std::setprecision(4)
           << 360.0 / t.omega_per_rad << " deg";
+      sep = ", ";
     }
     out << ", DH and marker deltas, quadratic trend; rank " << model_.rank() << " of "
         << model_.n_parameters() << " parameters";
