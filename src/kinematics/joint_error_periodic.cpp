@@ -74,20 +74,32 @@ struct JointSums {
   std::vector<double> gg;  // |g_j|^2
 };
 
-// The residual drop of a least-squares fit of the residual on g sin(w q), g cos(w q).
-double drop(const JointSums& j, double omega) {
+// Sums over the fiducials for one frequency: with A = g sin(w q), B = g cos(w q) stacked, A.r,
+// B.r, A.A, B.B and A.B.
+struct PairSums {
   double ar = 0.0, br = 0.0, aa = 0.0, bb = 0.0, ab = 0.0;
-  for (std::size_t k = 0; k < j.q.size(); ++k) {
-    const double u = std::sin(omega * j.q[k]), v = std::cos(omega * j.q[k]);
-    ar += j.gr[k] * u;
-    br += j.gr[k] * v;
-    aa += j.gg[k] * u * u;
-    bb += j.gg[k] * v * v;
-    ab += j.gg[k] * u * v;
+
+  void add(double gr, double gg, double u, double v) {
+    ar += gr * u;
+    br += gr * v;
+    aa += gg * u * u;
+    bb += gg * v * v;
+    ab += gg * u * v;
   }
-  const double det = aa * bb - ab * ab;
-  if (!(det > 1e-12 * aa * bb)) return 0.0;  // the two columns are (nearly) one
-  return (bb * ar * ar - 2.0 * ab * ar * br + aa * br * br) / det;
+  // The drop of |r|^2 by a least-squares fit of r on A and B (0 when they are nearly one).
+  [[nodiscard]] double drop() const {
+    const double det = aa * bb - ab * ab;
+    if (!(det > 1e-12 * aa * bb)) return 0.0;
+    return (bb * ar * ar - 2.0 * ab * ar * br + aa * br * br) / det;
+  }
+};
+
+double drop(const JointSums& j, double omega) {
+  PairSums sums;
+  for (std::size_t k = 0; k < j.q.size(); ++k) {
+    sums.add(j.gr[k], j.gg[k], std::sin(omega * j.q[k]), std::cos(omega * j.q[k]));
+  }
+  return sums.drop();
 }
 
 struct Peak {
@@ -110,20 +122,14 @@ Peak scan(const JointSums& j, double omega_lo, double step, int n_steps) {
         dc[m] = std::cos(step * j.q[m]);
       }
     }
-    double ar = 0.0, br = 0.0, aa = 0.0, bb = 0.0, ab = 0.0;
+    PairSums sums;
     for (std::size_t m = 0; m < n; ++m) {
-      ar += j.gr[m] * s[m];
-      br += j.gr[m] * c[m];
-      aa += j.gg[m] * s[m] * s[m];
-      bb += j.gg[m] * c[m] * c[m];
-      ab += j.gg[m] * s[m] * c[m];
+      sums.add(j.gr[m], j.gg[m], s[m], c[m]);
       const double s_next = s[m] * dc[m] + c[m] * ds[m];
       c[m] = c[m] * dc[m] - s[m] * ds[m];
       s[m] = s_next;
     }
-    const double det = aa * bb - ab * ab;
-    if (!(det > 1e-12 * aa * bb)) continue;
-    const double d = (bb * ar * ar - 2.0 * ab * ar * br + aa * br * br) / det;
+    const double d = sums.drop();
     if (d > best.drop) best = {d, omega};
   }
   return best;
