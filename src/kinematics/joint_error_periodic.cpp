@@ -36,32 +36,55 @@ constexpr double kFrequencyResolution = 1.0 / 4096.0;
 // The periodic terms must lower the CV RMS by this fraction to be kept (as a higher degree).
 constexpr double kPeriodicGain = 1e-3;
 
-struct SmoothFit {
-  Eigen::MatrixXd design;         // 3 J x columns at x = 0
+// The smooth model's design at x = 0 without periodic terms, built once (it needs the forward
+// kinematics of every fiducial); a term's columns are a joint's column times sin and cos.
+struct SmoothDesign {
+  Eigen::MatrixXd base;           // 3 J x the smooth layout's columns
   std::vector<int> joint_column;  // each joint's degree-0 column: its Jacobian column
-  Eigen::VectorXd residual;       // e - A x
-  double sigma2 = 0.0;            // |residual|^2 / (3 J - rank)
-  bool ok = false;
 };
 
-SmoothFit fit_smooth(const JointErrorModel::State& s, const std::vector<JointVector>& q_rad,
-                     const Eigen::VectorXd& e, const JointErrorModelOptions& options,
-                     const std::vector<int>& distinct,
-                     const std::vector<JointPeriodicTerm>& terms) {
+SmoothDesign smooth_design(const JointErrorModel::State& s, const std::vector<JointVector>& q_rad,
+                           const std::vector<int>& distinct) {
   JointErrorModel::State t = s;
   t.layout.degrees.clear();
   for (const int d : distinct)
     t.layout.degrees.push_back(std::min(kSmoothDegree, joint_degree_cap(d)));
-  t.layout.periodic = terms;
-  SmoothFit out;
+  t.layout.periodic.clear();
+  SmoothDesign out;
   for (int i = 0; i < t.layout.n_joints(); ++i)
     out.joint_column.push_back(t.layout.joint_column(i));
-  out.design = design_matrix(t, Eigen::VectorXd::Zero(t.layout.n_columns()), q_rad);
-  const std::vector<Eigen::Index> cols =
-      independent_columns(out.design, options.relative_rank_tolerance);
+  out.base = design_matrix(t, Eigen::VectorXd::Zero(t.layout.n_columns()), q_rad);
+  return out;
+}
+
+struct SmoothFit {
+  Eigen::VectorXd residual;  // e - A x
+  double sigma2 = 0.0;       // |residual|^2 / (3 J - rank)
+  bool ok = false;
+};
+
+// The smooth model with `terms` (the same columns design_rows gives them, appended last).
+SmoothFit fit_smooth(const SmoothDesign& d, const std::vector<JointVector>& q_rad,
+                     const Eigen::VectorXd& e, const JointErrorModelOptions& options,
+                     const std::vector<JointPeriodicTerm>& terms) {
+  const Eigen::Index n_base = d.base.cols();
+  Eigen::MatrixXd a(d.base.rows(), n_base + 2 * static_cast<Eigen::Index>(terms.size()));
+  a.leftCols(n_base) = d.base;
+  for (std::size_t m = 0; m < terms.size(); ++m) {
+    const Eigen::Index c = n_base + 2 * static_cast<Eigen::Index>(m);
+    const int column = d.joint_column[static_cast<std::size_t>(terms[m].joint)];
+    for (std::size_t j = 0; j < q_rad.size(); ++j) {
+      const auto r = static_cast<Eigen::Index>(3 * j);
+      const double w = terms[m].omega_per_rad * q_rad[j](terms[m].joint);
+      a.block<3, 1>(r, c) = d.base.block<3, 1>(r, column) * std::sin(w);
+      a.block<3, 1>(r, c + 1) = d.base.block<3, 1>(r, column) * std::cos(w);
+    }
+  }
+  SmoothFit out;
+  const std::vector<Eigen::Index> cols = independent_columns(a, options.relative_rank_tolerance);
   const auto dof = e.size() - static_cast<Eigen::Index>(cols.size());
   if (dof <= 0) return out;
-  out.residual = e - out.design * solve_columns(out.design, cols, e);
+  out.residual = e - a * solve_columns(a, cols, e);
   out.sigma2 = out.residual.squaredNorm() / static_cast<double>(dof);
   out.ok = out.sigma2 > 0.0;
   return out;
@@ -174,9 +197,10 @@ std::vector<JointPeriodicTerm> find_periodic_terms(const JointErrorModel::State&
   const Eigen::Map<const Eigen::VectorXd> e(e_points.data(), 3 * e_points.cols());
   std::vector<int> distinct;
   for (int i = 0; i < n_joints; ++i) distinct.push_back(distinct_joint_values(q_rad, i));
+  const SmoothDesign design = smooth_design(s, q_rad, distinct);
   std::vector<JointPeriodicTerm> terms;
   while (static_cast<int>(terms.size()) < options.max_periodic_terms) {
-    const SmoothFit fit = fit_smooth(s, q_rad, e, options, distinct, terms);
+    const SmoothFit fit = fit_smooth(design, q_rad, e, options, terms);
     if (!fit.ok) break;
     Peak best;
     int best_joint = -1;
@@ -193,10 +217,10 @@ std::vector<JointPeriodicTerm> find_periodic_terms(const JointErrorModel::State&
           std::min(kMaxCandidates, static_cast<int>((omega_hi - omega_lo) / step) + 1);
       if (n_steps < 1) continue;
       JointSums sums;
-      const int column = fit.joint_column[static_cast<std::size_t>(i)];
+      const int column = design.joint_column[static_cast<std::size_t>(i)];
       for (std::size_t j = 0; j < n_fid; ++j) {
         const auto r = static_cast<Eigen::Index>(3 * j);
-        const Eigen::Vector3d g = fit.design.block<3, 1>(r, column);
+        const Eigen::Vector3d g = design.base.block<3, 1>(r, column);
         sums.q.push_back(q_rad[j](i));
         sums.gr.push_back(g.dot(fit.residual.segment<3>(r)));
         sums.gg.push_back(g.squaredNorm());
