@@ -2,20 +2,23 @@
 # Installs vrreg's build and test dependencies from Debian bookworm's packages, and the charting
 # library that `vrreg report` inlines (web/: `npm ci` from the npm registry, pinned by
 # web/package-lock.json). With --with-browser also Debian's Chromium, for the browser test; with
-# --with-fuzz also clang and libFuzzer, for scripts/fuzz.sh; with --with-sklearn also
+# --with-clang also clang and its sanitizer runtimes, for the `asan` preset (scripts/test.sh); with
+# --with-fuzz the same, for libFuzzer (scripts/fuzz.sh); with --with-sklearn also
 # scikit-learn, the Gaussian-process peer of scripts/bench-field-peers.py.
 # Idempotent and quick when everything is already there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 with_browser=0
 with_fuzz=0
+with_clang=0
 with_sklearn=0
 for arg in "$@"; do
   case "$arg" in
     --with-browser) with_browser=1 ;;
+    --with-clang) with_clang=1 ;;
     --with-fuzz) with_fuzz=1 ;;
     --with-sklearn) with_sklearn=1 ;;
-    *) echo "install-deps: unknown option $arg (use --with-browser, --with-fuzz, --with-sklearn)" >&2; exit 2 ;;
+    *) echo "install-deps: unknown option $arg (use --with-browser, --with-clang, --with-fuzz, --with-sklearn)" >&2; exit 2 ;;
   esac
 done
 packages=(
@@ -36,8 +39,8 @@ packages=(
 if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi
 if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 if ((with_browser)); then packages+=(chromium); fi
-# clang++ (Debian's default clang, 14 on bookworm) and its libFuzzer / sanitizer runtimes.
-if ((with_fuzz)); then packages+=(clang libclang-rt-dev); fi
+# clang++ (Debian's default clang, 14 on bookworm) and its sanitizer / libFuzzer runtimes.
+if ((with_clang || with_fuzz)); then packages+=(clang libclang-rt-dev); fi
 if ((with_sklearn)); then packages+=(python3-sklearn); fi
 missing=()
 for p in "${packages[@]}"; do

@@ -74,7 +74,7 @@ TEST(SerialChain, RejectsBadInput) {
                InputError);
   Eigen::Isometry3d reflection = Eigen::Isometry3d::Identity();
   reflection.linear()(2, 2) = -1.0;
-  EXPECT_THROW(ur5().with_base(reflection), InputError);
+  EXPECT_THROW(static_cast<void>(ur5().with_base(reflection)), InputError);
   EXPECT_THROW(SerialChain("x", std::vector<DhRow>(13), std::vector<JointLimits>(13)), InputError);
 }
 
