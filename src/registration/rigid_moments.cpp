@@ -1,9 +1,6 @@
 #include "rigid_moments.hpp"
 
 #include <cmath>
-#include <vector>
-
-#include <tbb/parallel_for.h>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
@@ -15,10 +12,6 @@ namespace {
 
 constexpr int kLanes = 4;
 constexpr int kGroupsPerBlock = 32;  // 128 points per block: short chains, then compensated totals
-// From this many points on, fixed chunks of kChunkPoints run on TBB's threads (issue 14: ~2x on
-// 2 cores at J = 9 600, where one chunk is ~1.2 us of work and the split costs well under that).
-constexpr Eigen::Index kParallelMinPoints = 4096;
-constexpr Eigen::Index kChunkPoints = 1024;  // 8 blocks
 
 // Compensated totals per lane: the exact sum of the block sums is about hi + lo.
 struct LaneTotals {
@@ -328,11 +321,9 @@ bool cpu_has_avx2_fma() {
 
 }  // namespace
 
-namespace {
-
-FastMoments one_kernel(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
-                       const Eigen::Ref<const Eigen::VectorXd>& w, const Eigen::Vector3d& shift_x,
-                       const Eigen::Vector3d& shift_y) {
+FastMoments fast_moments(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
+                         const Eigen::Ref<const Eigen::VectorXd>& w, const Eigen::Vector3d& shift_x,
+                         const Eigen::Vector3d& shift_y) {
 #ifdef VRREG_MOMENTS_AVX2
   if (cpu_has_avx512vl()) {
     return w.size() != 0 ? avx512vl<true>(x, y, w, shift_x, shift_y)
@@ -345,40 +336,6 @@ FastMoments one_kernel(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
 #endif
   return w.size() != 0 ? portable<true>(x, y, w, shift_x, shift_y)
                        : portable<false>(x, y, w, shift_x, shift_y);
-}
-
-}  // namespace
-
-FastMoments fast_moments(const ConstPoints3Ref& x, const ConstPoints3Ref& y,
-                         const Eigen::Ref<const Eigen::VectorXd>& w, const Eigen::Vector3d& shift_x,
-                         const Eigen::Vector3d& shift_y) {
-  const Eigen::Index n = x.cols();
-  if (n < kParallelMinPoints) return one_kernel(x, y, w, shift_x, shift_y);
-  // Fixed chunks, whatever the threads: each chunk's compensated sums are computed alone, then
-  // folded in chunk order, so the bits depend on n and the data only.
-  const Eigen::Index chunks = (n + kChunkPoints - 1) / kChunkPoints;
-  std::vector<FastMoments> parts(static_cast<std::size_t>(chunks));
-  tbb::parallel_for(Eigen::Index{0}, chunks, [&](Eigen::Index c) {
-    const Eigen::Index first = c * kChunkPoints;
-    const Eigen::Index count = std::min(kChunkPoints, n - first);
-    const Eigen::VectorXd no_weights;
-    parts[static_cast<std::size_t>(c)] =
-        w.size() != 0 ? one_kernel(x.middleCols(first, count), y.middleCols(first, count),
-                                   w.segment(first, count), shift_x, shift_y)
-                      : one_kernel(x.middleCols(first, count), y.middleCols(first, count),
-                                   no_weights, shift_x, shift_y);
-  });
-  FastMoments total = parts.front();
-  for (std::size_t c = 1; c < parts.size(); ++c) {
-    for (int k = 0; k < kMoments; ++k) {
-      const double t = parts[c].hi[k];
-      const double s = total.hi[k] + t;
-      const double bt = s - total.hi[k];
-      total.lo[k] += ((total.hi[k] - (s - bt)) + (t - bt)) + parts[c].lo[k];
-      total.hi[k] = s;
-    }
-  }
-  return total;
 }
 
 bool fast_moments_using(MomentKernel kernel, const ConstPoints3Ref& x, const ConstPoints3Ref& y,

@@ -6,9 +6,6 @@
 #include <cmath>
 #include <limits>
 
-#include <tbb/global_control.h>
-#include <tbb/task_arena.h>
-
 #include "registration/rigid_moments.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/registration/rigid.hpp"
@@ -186,37 +183,6 @@ TEST(RegisterRigidFast, KernelsAgreeBitForBit) {
           EXPECT_EQ(dispatched.hi[k], b.hi[k]) << "n " << n << " k " << k;
         }
       }
-    }
-  }
-}
-
-// From 4 096 points the moments are summed in fixed chunks on TBB's threads: the same bits with
-// one thread, two, or as many as TBB likes, weighted or not, whatever the remainder chunk holds.
-TEST(RegisterRigidFast, SameBitsOnAnyThreadCount) {
-  Random rng(16);
-  for (const int n : {4095, 4096, 9600, 100003}) {
-    const Case c = make_case(rng, n, 0.2, Eigen::Vector3d(0.5, 1.0, -0.2), 1e-3);
-    Eigen::VectorXd w(n);
-    for (Eigen::Index j = 0; j < n; ++j) w[j] = rng.uniform(0.1, 3.0);
-    for (const bool weighted : {false, true}) {
-      SCOPED_TRACE(::testing::Message() << "n " << n << " weighted " << weighted);
-      const Eigen::VectorXd& ww = weighted ? w : Eigen::VectorXd();
-      const RegistrationResult free_threads = register_rigid(c.x, c.y, fast_options(), ww);
-      RegistrationResult one, two;
-      {
-        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-        one = register_rigid(c.x, c.y, fast_options(), ww);
-      }
-      tbb::task_arena arena(2);
-      arena.execute([&] { two = register_rigid(c.x, c.y, fast_options(), ww); });
-      for (const RegistrationResult* r : {&one, &two}) {
-        EXPECT_EQ(r->fre_m, free_threads.fre_m);
-        EXPECT_TRUE(r->T_robot_sensor.rotation == free_threads.T_robot_sensor.rotation);
-        EXPECT_TRUE(r->T_robot_sensor.translation_m == free_threads.T_robot_sensor.translation_m);
-      }
-      const RegistrationResult full = register_rigid(c.x, c.y, RegistrationOptions{}, ww);
-      expect_same_transform(free_threads, full);
-      EXPECT_NEAR(free_threads.fre_m, full.fre_m, closed_form_tolerance(c, full.fre_m));
     }
   }
 }
