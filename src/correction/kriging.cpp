@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "kriging_fit.hpp"
+#include "kriging_loo.hpp"
 #include "kriging_posterior.hpp"
 #include "point_index.hpp"
 #include "vrreg/core/check.hpp"
@@ -37,6 +38,12 @@ void validate(const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_
                          options.max_iterations >= 1,
                      "kriging: exact_limit >= 1, local_neighbours and fit_subset > "
                          << terms << ", fit_cluster, restarts and max_iterations >= 1 required");
+  if (options.latent_sd_scale) {
+    for (const double c : *options.latent_sd_scale) {
+      VRREG_THROW_UNLESS(std::isfinite(c) && c > 0.0,
+                         "kriging: latent sd scale " << c << " must be finite and > 0");
+    }
+  }
   const detail::TrendFrame frame = detail::trend_frame(positions_m);
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(
       detail::trend_basis(positions_m, options.trend_degree, frame));
@@ -68,12 +75,21 @@ struct KrigingModel::Impl {
   [[nodiscard]] bool exact() const { return positions_m.cols() <= options.exact_limit; }
 
   void condition() {
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      axes[axis].latent_sd_scale = options.latent_sd_scale ? (*options.latent_sd_scale)[axis] : 1.0;
+    }
     if (exact()) {
-      for (std::size_t axis = 0; axis < 3; ++axis) {
+      // Axes in parallel: the leave-one-out inverse is J^3 / 3 per axis.
+      tbb::parallel_for(std::size_t{0}, std::size_t{3}, [&](std::size_t axis) {
         exact_posterior[axis] = detail::condition_kriging(
             positions_m, values_m.row(static_cast<Eigen::Index>(axis)).transpose(),
             axes[axis].hyperparameters, options.kernel, options.trend_degree, frame);
-      }
+        if (!options.latent_sd_scale && options.loo_sd_calibration) {
+          axes[axis].latent_sd_scale = detail::loo_latent_sd_scale(
+              detail::leave_one_out(*exact_posterior[axis]),
+              axes[axis].hyperparameters.nugget_sd_m);
+        }
+      });
     } else {
       index.emplace(positions_m);
       const Eigen::MatrixXd basis = detail::trend_basis(positions_m, options.trend_degree, frame);
@@ -106,7 +122,7 @@ struct KrigingModel::Impl {
       Eigen::RowVectorXd s(1);
       detail::predict_kriging(post, query_m, m, s);
       mean(axis) = trend(axis) + m(0);
-      sd(axis) = s(0);
+      sd(axis) = axes[static_cast<std::size_t>(axis)].latent_sd_scale * s(0);
     }
   }
 };
@@ -182,6 +198,8 @@ FieldPrediction KrigingModel::predict(const ConstPoints3Ref& query_m) const {
                                 out.sd_m.row(axis).segment(begin, count));
       }
     }
+    for (int axis = 0; axis < 3; ++axis)
+      out.sd_m.row(axis) *= impl_->axes[static_cast<std::size_t>(axis)].latent_sd_scale;
     return out;
   }
   tbb::parallel_for(Eigen::Index{0}, n, [&](Eigen::Index q) {
@@ -214,6 +232,8 @@ std::string KrigingModel::describe() const {
     out << "; " << names[axis] << ": l = " << h.length_m(0) * 1e3 << " " << h.length_m(1) * 1e3
         << " " << h.length_m(2) * 1e3 << " mm, s = " << h.signal_sd_m * 1e3
         << " mm, nugget = " << h.nugget_sd_m * 1e3 << " mm";
+    if (impl_->axes[axis].latent_sd_scale != 1.0)
+      out << ", sd x " << impl_->axes[axis].latent_sd_scale;
   }
   return out.str();
 }

@@ -58,9 +58,14 @@ class KrigingFieldModel final : public FieldModel {
 
   [[nodiscard]] std::unique_ptr<FieldModel> refit(const FieldData& subset) const override {
     std::array<KrigingHyperparameters, 3> h;
-    for (std::size_t a = 0; a < 3; ++a) h[a] = model_.axes()[a].hyperparameters;
-    return std::make_unique<KrigingFieldModel>(fit_in_frame(frame_, subset, options_, &h),
-                                               options_, frame_);
+    KrigingOptions options = options_;
+    options.latent_sd_scale.emplace();  // the parent's leave-one-out calibration, kept
+    for (std::size_t a = 0; a < 3; ++a) {
+      h[a] = model_.axes()[a].hyperparameters;
+      (*options.latent_sd_scale)[a] = model_.axes()[a].latent_sd_scale;
+    }
+    return std::make_unique<KrigingFieldModel>(fit_in_frame(frame_, subset, options, &h),
+                                               options, frame_);
   }
 
   [[nodiscard]] FieldPredictions predict(const FieldQuery& query) const override {

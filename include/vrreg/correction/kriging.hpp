@@ -52,6 +52,15 @@ struct KrigingOptions {
   /// Starts of the optimiser (deterministic: length scales at fractions of the extent).
   int restarts = 2;
   int max_iterations = 60;
+  /// Calibrate the predicted sd by leave-one-out (exact models): per axis the latent posterior
+  /// sd is multiplied by the factor that gives the fiducials' leave-one-out z-scores unit mean
+  /// square, the nugget kept (KrigingAxisFit::latent_sd_scale). A kernel that cannot represent
+  /// the field (e.g. a wave shorter than the fiducial spacing) misstates its own sd; the held-out
+  /// fiducials show by how much. Local models (J > exact_limit) keep factor 1.
+  bool loo_sd_calibration = true;
+  /// Given factors instead (e.g. a model refitted on a subset keeps its parent's): no
+  /// leave-one-out, in exact and local models alike. Each must be finite and > 0.
+  std::optional<std::array<double, 3>> latent_sd_scale;
 };
 
 /// Result of fitting one axis' hyperparameters.
@@ -60,6 +69,8 @@ struct KrigingAxisFit {
   double restricted_log_likelihood = 0.0;  ///< REML objective at the optimum (fit subset)
   int evaluations = 0;                     ///< likelihood + gradient evaluations, all starts
   Eigen::Index n_fit = 0;                  ///< fiducials the hyperparameters were fitted on
+  /// Factor on the latent posterior sd (KrigingOptions::loo_sd_calibration); 1: none.
+  double latent_sd_scale = 1.0;
 };
 
 /// A fitted per-axis universal-kriging model of a 3-vector field.
@@ -83,7 +94,7 @@ class KrigingModel {
   KrigingModel& operator=(KrigingModel&&) noexcept;
 
   /// Posterior mean and sd of the latent field at query_m (3 x N, [m]); the sd includes the
-  /// trend coefficients' uncertainty but not the nugget.
+  /// trend coefficients' uncertainty but not the nugget, and is scaled by latent_sd_scale.
   [[nodiscard]] FieldPrediction predict(const ConstPoints3Ref& query_m) const;
   [[nodiscard]] const std::array<KrigingAxisFit, 3>& axes() const;
   /// Nugget sd per axis [m]: the noise of one measured value, to add for a new measurement.
