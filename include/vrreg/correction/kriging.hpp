@@ -52,11 +52,11 @@ struct KrigingOptions {
   /// Starts of the optimiser (deterministic: length scales at fractions of the extent).
   int restarts = 2;
   int max_iterations = 60;
-  /// Calibrate the predicted sd by leave-one-out (exact models): per axis the latent posterior
-  /// sd is multiplied by the factor that gives the fiducials' leave-one-out z-scores unit mean
-  /// square, the nugget kept (KrigingAxisFit::latent_sd_scale). A kernel that cannot represent
-  /// the field (e.g. a wave shorter than the fiducial spacing) misstates its own sd; the held-out
-  /// fiducials show by how much. Local models (J > exact_limit) keep factor 1.
+  /// Check the predicted sd by leave-one-out (exact models): when the fiducials' leave-one-out
+  /// z-scores have a mean square more than 3 standard errors from 1, that axis' latent posterior
+  /// sd is multiplied by the factor that makes it 1, the nugget kept
+  /// (KrigingAxisFit::latent_sd_scale): e.g. a signal sd misstated, or hyperparameters from other
+  /// data. Local models (J > exact_limit) keep factor 1.
   bool loo_sd_calibration = true;
   /// Given factors instead (e.g. a model refitted on a subset keeps its parent's): no
   /// leave-one-out, in exact and local models alike. Each must be finite and > 0.
