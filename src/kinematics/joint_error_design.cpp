@@ -40,6 +40,11 @@ int JointErrorLayout::n_columns() const {
   return periodic_column() + 2 * static_cast<int>(periodic.size());
 }
 
+std::pair<double, double> periodic_factors(const JointPeriodicTerm& term, double q_joint_rad) {
+  const double w = term.omega_per_rad * q_joint_rad;
+  return {std::sin(w), std::cos(w)};
+}
+
 void legendre_values(double u, int degree, double* out) {
   out[0] = 1.0;
   if (degree >= 1) out[1] = u;
@@ -77,8 +82,8 @@ JointVector joint_error_rad(const JointErrorModel::State& s, const Eigen::Vector
   }
   int c = s.layout.periodic_column();
   for (const JointPeriodicTerm& t : s.layout.periodic) {
-    const double w = t.omega_per_rad * q_rad(t.joint);
-    dq(t.joint) += x(c) * std::sin(w) + x(c + 1) * std::cos(w);
+    const auto [sin_w, cos_w] = periodic_factors(t, q_rad(t.joint));
+    dq(t.joint) += x(c) * sin_w + x(c + 1) * cos_w;
     c += 2;
   }
   return dq;
@@ -150,9 +155,9 @@ void design_rows(const JointErrorModel::State& s, const SerialChain& chain_x,
   }
   int c = l.periodic_column();
   for (const JointPeriodicTerm& t : l.periodic) {
-    const double w = t.omega_per_rad * q_rad(t.joint);
-    rows.col(c) = d.d_joint.col(t.joint) * std::sin(w);
-    rows.col(c + 1) = d.d_joint.col(t.joint) * std::cos(w);
+    const auto [sin_w, cos_w] = periodic_factors(t, q_rad(t.joint));
+    rows.col(c) = d.d_joint.col(t.joint) * sin_w;
+    rows.col(c + 1) = d.d_joint.col(t.joint) * cos_w;
     c += 2;
   }
 }

@@ -56,6 +56,8 @@ double joint_unit(const JointErrorModel::State& s, int joint, double q_rad);
 /// Monomials 1, x, y, z, x^2, xy, xz, y^2, yz, z^2 (first n_trend_terms) of the scaled position.
 void trend_monomials(const JointErrorModel::State& s, const Eigen::Vector3d& p_nominal_m, int n,
                      double* out);
+/// A periodic term's factors on its joint's column: sin and cos of omega q_joint.
+std::pair<double, double> periodic_factors(const JointPeriodicTerm& term, double q_joint_rad);
 /// dq(q) [rad] of parameters `x`.
 JointVector joint_error_rad(const JointErrorModel::State& s, const Eigen::VectorXd& x,
                             const JointRef& q_rad);

@@ -63,7 +63,8 @@ struct SmoothFit {
   bool ok = false;
 };
 
-// The smooth model with `terms` (the same columns design_rows gives them, appended last).
+// The smooth model with `terms` (design_rows' columns for them: periodic_factors times the
+// joint's column, appended last).
 SmoothFit fit_smooth(const SmoothDesign& d, const std::vector<JointVector>& q_rad,
                      const Eigen::VectorXd& e, const JointErrorModelOptions& options,
                      const std::vector<JointPeriodicTerm>& terms) {
@@ -75,9 +76,9 @@ SmoothFit fit_smooth(const SmoothDesign& d, const std::vector<JointVector>& q_ra
     const int column = d.joint_column[static_cast<std::size_t>(terms[m].joint)];
     for (std::size_t j = 0; j < q_rad.size(); ++j) {
       const auto r = static_cast<Eigen::Index>(3 * j);
-      const double w = terms[m].omega_per_rad * q_rad[j](terms[m].joint);
-      a.block<3, 1>(r, c) = d.base.block<3, 1>(r, column) * std::sin(w);
-      a.block<3, 1>(r, c + 1) = d.base.block<3, 1>(r, column) * std::cos(w);
+      const auto [sin_w, cos_w] = periodic_factors(terms[m], q_rad[j](terms[m].joint));
+      a.block<3, 1>(r, c) = d.base.block<3, 1>(r, column) * sin_w;
+      a.block<3, 1>(r, c + 1) = d.base.block<3, 1>(r, column) * cos_w;
     }
   }
   SmoothFit out;
