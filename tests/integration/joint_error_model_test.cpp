@@ -71,7 +71,9 @@ void kuka_cell(std::uint64_t seed) {
 TEST(JointErrorModelCells, A1CorrectsToTheNoiseFloor) {
   const simulation::Testbed ur5 = simulation::ur5_testbed();
   std::vector<double> joint;
-  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+  // Under the sanitizers one seed exercises the same code (three take ~12 s there).
+  const std::uint64_t last_seed = testing::sanitized() ? 1 : 3;
+  for (std::uint64_t seed = 1; seed <= last_seed; ++seed) {
     const simulation::SimulatedDataset data =
         simulation::simulate_dataset(ur5, simulation::Dataset::kA1, seeded(seed));
     const MeasurementSet set = experiments::to_measurement_set(data);
@@ -91,7 +93,7 @@ TEST(JointErrorModelCells, A1CorrectsToTheNoiseFloor) {
     joint.push_back(cor_m);
   }
   std::sort(joint.begin(), joint.end());
-  EXPECT_LT(joint[1], 0.100e-3);  // the target, median over the seeds
+  EXPECT_LT(joint[joint.size() / 2], 0.100e-3);  // the target, median over the seeds
 }
 
 TEST(JointErrorModelCells, KukaOneModelForAllFourConfigurations) {
