@@ -50,7 +50,8 @@ class FieldModelsOnA1 : public ::testing::Test {
     out.locations.clear();
     for (const Location& loc : set_->locations) {
       Eigen::Vector3i n;
-      EXPECT_EQ(std::sscanf(loc.point.c_str(), "p%d_%d_%d", &n.x(), &n.y(), &n.z()), 3);
+      EXPECT_EQ(std::sscanf(loc.point.c_str(), "p%d_%d_%d", &n.x(), &n.y(), &n.z()), 3)
+          << loc.point;
       if (keep(n, loc.role)) out.locations.push_back(loc);
     }
     return out;
@@ -121,7 +122,7 @@ TEST_F(FieldModelsOnA1, ThinnedGridJointModelFindsTheTransmissionPeriod) {
 
 // The 27 even nodes (50 mm apart) around p04_06_04: the joint-space model would identify ~45
 // parameters from 81 equations, and is refused with the count it needs, alone and in `auto`,
-// which then picks a position model; the paper's octuplet still corrects the 8 targets inside.
+// which then picks another method.
 TEST_F(FieldModelsOnA1, TwentySevenFiducialsAreTooFewForTheJointModel) {
   const MeasurementSet cube = nodes([](const Eigen::Vector3i& n, Role role) {
     const int d = (n - Eigen::Vector3i(4, 6, 4)).cwiseAbs().maxCoeff();
