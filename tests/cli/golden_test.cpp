@@ -1,4 +1,4 @@
-// Golden outputs (issue 9): the commands of tests/data/golden/commands.txt print and write exactly
+// Golden outputs: the commands of tests/data/golden/commands.txt print and write exactly
 // what they did before the library was refactored, so a user's numbers never change because the
 // code moved. VRREG_GOLDEN_UPDATE=1 records them again (on purpose only).
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@
 
 #include "cli_runner.hpp"
 #include "two_arm_cell.hpp"
+#include "vrreg_test.hpp"
 
 namespace vrreg::testing {
 namespace {
@@ -45,16 +46,18 @@ std::vector<GoldenCommand> read_commands(const fs::path& path) {
   return out;
 }
 
-TEST(Golden, CommandsPrintAndWriteWhatTheyDidBefore) {
+// Runs the commands of `commands_file` in order in one fresh directory holding cell.csv (the example
+// cell) and arms.csv, and compares what each printed and wrote with the recorded goldens.
+void check_golden_commands(const std::string& commands_file, const std::string& dir_name) {
   const fs::path golden = fs::path(VRREG_TEST_DATA_DIR) / "golden";
   const bool update = std::getenv("VRREG_GOLDEN_UPDATE") != nullptr;
-  const fs::path dir = fresh_dir("golden");
+  const fs::path dir = fresh_dir(dir_name);
   fs::copy_file(fs::path(VRREG_SOURCE_DIR) / "examples/data/example-cell.csv", dir / "cell.csv");
   write_text(dir / "arms.csv", two_arm_cell_csv());
   // The report inlines the charting library; a small stand-in keeps this test independent of it.
   write_text(dir / "plotly.js", "/* Plotly stand-in for the golden test */" + std::string(1000, ' '));
-  const std::vector<GoldenCommand> commands = read_commands(golden / "commands.txt");
-  ASSERT_GE(commands.size(), 20u);
+  const std::vector<GoldenCommand> commands = read_commands(golden / commands_file);
+  ASSERT_GE(commands.size(), 10u);
   for (const GoldenCommand& c : commands) {
     SCOPED_TRACE(c.name + ": vrreg " + c.args);
     const CliResult r = run_vrreg_in(dir, c.args, "VRREG_PLOTLY_JS=plotly.js");
@@ -69,6 +72,31 @@ TEST(Golden, CommandsPrintAndWriteWhatTheyDidBefore) {
       ASSERT_TRUE(fs::exists(golden / golden_name)) << golden_name << " was never recorded";
       EXPECT_EQ(text, read_text(golden / golden_name)) << golden_name << " differs";
     }
+  }
+  fs::remove_all(dir);
+}
+
+TEST(Golden, CommandsPrintAndWriteWhatTheyDidBefore) {
+  check_golden_commands("commands.txt", "golden");
+}
+
+// The field models: kriging's hyperparameter search takes minutes under the sanitizers.
+TEST(Golden, FieldModelCommandsPrintAndWriteWhatTheyDidBefore) {
+  if (sanitized()) GTEST_SKIP() << "kriging and the joint model: release build only";
+  check_golden_commands("field-commands.txt", "golden-field");
+}
+
+// Every method on the simulated test beds (reproduce --beyond): a few minutes, release only.
+TEST(Golden, ReproduceBeyondPrintsWhatItDidBefore) {
+  if (sanitized()) GTEST_SKIP() << "every field model on every dataset: release build only";
+  const fs::path golden = fs::path(VRREG_TEST_DATA_DIR) / "golden" / "reproduce_beyond_json.out";
+  const fs::path dir = fresh_dir("golden-beyond");
+  const CliResult r = run_vrreg_in(dir, "reproduce --seed 1 --beyond --json --quiet --out ''");
+  ASSERT_EQ(r.status, 0) << r.err;
+  if (std::getenv("VRREG_GOLDEN_UPDATE") != nullptr) {
+    write_text(golden, r.out);
+  } else {
+    EXPECT_EQ(r.out, read_text(golden)) << golden << " differs";
   }
   fs::remove_all(dir);
 }
