@@ -29,6 +29,15 @@ void InterpolationFlags::add_to(CLI::App& command) {
       ->check(CLI::PositiveNumber);
 }
 
+void InterpolationFlags::add_corrector_flags_to(CLI::App& command) {
+  command.add_flag("--refit", refit,
+                   "fit the corrector again instead of using the one the model file holds (the "
+                   "same numbers unless the fitting code changed)");
+  command.add_flag("--exact", exact,
+                   "kriging and rbf: correct with the field model itself, not its table (which "
+                   "the model file holds, within 1/20 of the noise of it); slower");
+}
+
 InterpolationChoice InterpolationFlags::choice() const {
   InterpolationChoice c;
   if (!method.empty()) c.method = parse_interpolation_method(method);

@@ -21,7 +21,11 @@ nlohmann::json json_mm3(const Eigen::Vector3d& metres);
 struct InterpolationFlags {
   std::string method;  ///< empty: keep the model's
   std::optional<double> cube_mm;
+  bool refit = false;  ///< evaluate, correct: fit the corrector again
+  bool exact = false;  ///< evaluate, correct: the field model itself, not its table
   void add_to(CLI::App& command);
+  /// --refit and --exact, for the commands that use a model's corrector.
+  void add_corrector_flags_to(CLI::App& command);
   /// As the library's override of a model's stored settings.
   [[nodiscard]] InterpolationChoice choice() const;
   /// Register's settings: the defaults with these on top.

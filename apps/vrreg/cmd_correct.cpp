@@ -30,6 +30,8 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   CorrectOptions options;
   options.config = args.config;
   options.interpolation = args.interpolation.choice();
+  options.refit = args.interpolation.refit;
+  options.exact = args.interpolation.exact;
   if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
   const CorrectResult r =
       correct(model, io::read_measurement_csv(args.points, read_options), options);
@@ -83,6 +85,7 @@ void add_correct_command(CLI::App& app) {
       ->required();
   cmd->add_option("--config", args->config, "use only rows with this configuration label");
   args->interpolation.add_to(*cmd);
+  args->interpolation.add_corrector_flags_to(*cmd);
   add_output_option(*cmd, "-o,--output", args->output, "write corrected positions (CSV, mm) here")
       ->required();
   cmd->add_option("--robot", args->robot,

@@ -32,6 +32,8 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   EvaluateOptions options;
   options.config = args.config;
   options.interpolation = args.interpolation.choice();
+  options.refit = args.interpolation.refit;
+  options.exact = args.interpolation.exact;
   apply_evaluate_flags(args.strategy, options);
   if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
   const EvaluateResult r = evaluate(model, io::read_measurement_csv(args.targets), options);
@@ -125,6 +127,7 @@ void add_evaluate_command(CLI::App& app) {
   cmd->add_option("--config", args->config,
                   "use only target rows with this configuration label (default: the model's)");
   args->interpolation.add_to(*cmd);
+  args->interpolation.add_corrector_flags_to(*cmd);
   args->strategy.add_to(*cmd, false);
   add_output_option(*cmd, "--per-target", args->per_target,
                     "write per-target errors (CSV, mm) here");

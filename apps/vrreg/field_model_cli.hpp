@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/metrics/uncertainty_calibration.hpp"
 #include "vrreg/pipeline/field_model.hpp"
 
 namespace vrreg::cli {

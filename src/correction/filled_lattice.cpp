@@ -31,20 +31,28 @@ std::string FilledLattice::describe() const {
   return out.str();
 }
 
-FilledLattice fill_lattice(const ConstPoints3Ref& fiducials_robot_m,
-                           const ConstPoints3Ref& corrections_sensor_m, double tolerance_m) {
+std::optional<FilledLattice> try_fill_lattice(const ConstPoints3Ref& fiducials_robot_m,
+                                              const ConstPoints3Ref& corrections_sensor_m,
+                                              double tolerance_m, std::string& why) {
   VRREG_THROW_UNLESS(corrections_sensor_m.cols() == fiducials_robot_m.cols(),
                      "got " << corrections_sensor_m.cols() << " corrections for "
                             << fiducials_robot_m.cols() << " fiducials");
-  VRREG_THROW_UNLESS(fiducials_robot_m.cols() >= 8 && fiducials_robot_m.allFinite() &&
-                         corrections_sensor_m.allFinite(),
-                     "trilinear interpolation needs at least 8 fiducials with finite positions "
-                     "and corrections");
+  VRREG_THROW_UNLESS(fiducials_robot_m.allFinite() && corrections_sensor_m.allFinite(),
+                     "trilinear interpolation needs fiducials with finite positions and "
+                     "corrections");
+  if (fiducials_robot_m.cols() < 8) {
+    why = "trilinear interpolation needs at least 8 fiducials, got " +
+          std::to_string(fiducials_robot_m.cols());
+    return std::nullopt;
+  }
   VRREG_THROW_UNLESS(std::isfinite(tolerance_m) && tolerance_m > 0.0,
                      "the match tolerance must be > 0, got " << tolerance_m << " m");
   std::string reason;
   const auto lattice = detail::fit_lattice(fiducials_robot_m, tolerance_m, reason);
-  VRREG_THROW_UNLESS(lattice, "trilinear interpolation needs fiducials on a lattice: " << reason);
+  if (!lattice) {
+    why = "trilinear interpolation needs fiducials on a lattice: " + reason;
+    return std::nullopt;
+  }
   FilledLattice out;
   GridLayout& grid = out.grid;
   std::int64_t total = 1;
@@ -54,12 +62,16 @@ FilledLattice fill_lattice(const ConstPoints3Ref& fiducials_robot_m,
     grid.nodes[a] = lattice->axes[a].size();
     total *= grid.nodes[a];
   }
-  VRREG_THROW_UNLESS(grid.nodes[0] >= 2 && grid.nodes[1] >= 2 && grid.nodes[2] >= 2 &&
-                         total <= kMaxNodesPerFiducial * fiducials_robot_m.cols(),
-                     "trilinear interpolation needs a filled lattice: the "
-                         << grid.nodes[0] << " x " << grid.nodes[1] << " x " << grid.nodes[2]
-                         << " lattice has " << total << " nodes for " << fiducials_robot_m.cols()
-                         << " fiducials (use kriging or scattered)");
+  if (grid.nodes[0] < 2 || grid.nodes[1] < 2 || grid.nodes[2] < 2 ||
+      total > kMaxNodesPerFiducial * fiducials_robot_m.cols()) {
+    std::ostringstream message;
+    message << "trilinear interpolation needs a filled lattice: the " << grid.nodes[0] << " x "
+            << grid.nodes[1] << " x " << grid.nodes[2] << " lattice has " << total
+            << " nodes for " << fiducials_robot_m.cols()
+            << " fiducials (use kriging or scattered)";
+    why = message.str();
+    return std::nullopt;
+  }
   grid.n_fiducials = total;
   grid.fiducial.resize(static_cast<std::size_t>(total));
   for (std::int64_t n = 0; n < total; ++n) grid.fiducial[static_cast<std::size_t>(n)] = n;
@@ -109,6 +121,15 @@ FilledLattice fill_lattice(const ConstPoints3Ref& fiducials_robot_m,
     }
   }
   return out;
+}
+
+FilledLattice fill_lattice(const ConstPoints3Ref& fiducials_robot_m,
+                           const ConstPoints3Ref& corrections_sensor_m, double tolerance_m) {
+  std::string why;
+  std::optional<FilledLattice> out =
+      try_fill_lattice(fiducials_robot_m, corrections_sensor_m, tolerance_m, why);
+  VRREG_THROW_UNLESS(out, why);
+  return std::move(*out);
 }
 
 std::optional<Eigen::Vector3d> lattice_correction(const FilledLattice& lattice,

@@ -239,3 +239,62 @@ std::string KrigingModel::describe() const {
 }
 
 }  // namespace vrreg
+
+namespace vrreg {
+namespace {
+
+constexpr const char* kAxisNames[3] = {"x", "y", "z"};
+
+std::string axis_key(std::size_t axis, const char* key) {
+  return std::string(kAxisNames[axis]) + "." + key;
+}
+
+}  // namespace
+
+void KrigingModel::save(MethodState& state) const {
+  const KrigingOptions& o = impl_->options;
+  state.put("trend_degree", o.trend_degree);
+  state.put_text("kernel", o.kernel == KrigingKernel::matern52 ? "matern52" : "squared_exponential");
+  if (o.noise_sd_m) state.put("noise_sd_m", *o.noise_sd_m);
+  state.put("exact_limit", static_cast<double>(o.exact_limit));
+  state.put("local_neighbours", static_cast<double>(o.local_neighbours));
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const KrigingAxisFit& a = impl_->axes[axis];
+    state.put(axis_key(axis, "length_m"), Eigen::MatrixXd(a.hyperparameters.length_m));
+    state.put(axis_key(axis, "signal_sd_m"), a.hyperparameters.signal_sd_m);
+    state.put(axis_key(axis, "nugget_sd_m"), a.hyperparameters.nugget_sd_m);
+    state.put(axis_key(axis, "latent_sd_scale"), a.latent_sd_scale);
+    state.put(axis_key(axis, "n_fit"), static_cast<double>(a.n_fit));
+  }
+}
+
+KrigingModel KrigingModel::restore(const ConstPoints3Ref& positions_m,
+                                   const ConstPoints3Ref& values_m, const MethodState& state) {
+  KrigingOptions options;
+  options.trend_degree = static_cast<int>(state.integer("trend_degree", 0, 2));
+  const std::string& kernel = state.text("kernel");
+  VRREG_THROW_UNLESS(kernel == "matern52" || kernel == "squared_exponential",
+                     "the saved kriging corrector's kernel '" << kernel << "' is unknown");
+  options.kernel =
+      kernel == "matern52" ? KrigingKernel::matern52 : KrigingKernel::squared_exponential;
+  if (state.has("noise_sd_m")) options.noise_sd_m = state.number("noise_sd_m");
+  options.exact_limit = static_cast<Eigen::Index>(state.integer("exact_limit", 1, 1LL << 40));
+  options.local_neighbours =
+      static_cast<Eigen::Index>(state.integer("local_neighbours", 1, 1LL << 40));
+  std::array<KrigingHyperparameters, 3> h;
+  options.latent_sd_scale.emplace();
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    h[axis].length_m = state.array(axis_key(axis, "length_m"), 3, 1);
+    h[axis].signal_sd_m = state.number(axis_key(axis, "signal_sd_m"));
+    h[axis].nugget_sd_m = state.number(axis_key(axis, "nugget_sd_m"));
+    (*options.latent_sd_scale)[axis] = state.number(axis_key(axis, "latent_sd_scale"));
+  }
+  KrigingModel out = with_hyperparameters(positions_m, values_m, h, options);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    out.impl_->axes[axis].n_fit =
+        static_cast<Eigen::Index>(state.integer(axis_key(axis, "n_fit"), 0, 1LL << 40));
+  }
+  return out;
+}
+
+}  // namespace vrreg

@@ -167,3 +167,62 @@ std::string RbfModel::describe() const {
 }
 
 }  // namespace vrreg
+
+namespace vrreg {
+namespace {
+
+std::string rbf_key(int axis, const char* key) {
+  constexpr const char* kNames[3] = {"x", "y", "z"};
+  return std::string(kNames[axis]) + "." + key;
+}
+
+}  // namespace
+
+void RbfModel::save(MethodState& state) const {
+  const Impl& m = *impl_;
+  state.put("polynomial_degree", m.options.polynomial_degree);
+  state.put("exact_limit", static_cast<double>(m.options.exact_limit));
+  state.put("local_neighbours", static_cast<double>(m.options.local_neighbours));
+  state.put("frame_centre_m", Eigen::MatrixXd(m.frame.centre_m));
+  state.put("frame_scale_m", m.frame.scale_m);
+  for (int axis = 0; axis < 3; ++axis) {
+    const detail::RbfAxis& a = m.axes[static_cast<std::size_t>(axis)];
+    state.put(rbf_key(axis, "smoothing"), a.smoothing);
+    state.put(rbf_key(axis, "loo_rms_m"), a.loo_rms);
+    if (m.exact()) {
+      state.put(rbf_key(axis, "weights"), Eigen::MatrixXd(a.weights));
+      state.put(rbf_key(axis, "coefficients"), Eigen::MatrixXd(a.coefficients));
+    }
+  }
+}
+
+RbfModel RbfModel::restore(const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_m,
+                           const MethodState& state) {
+  RbfOptions options;
+  options.polynomial_degree = static_cast<int>(state.integer("polynomial_degree", 1, 2));
+  options.exact_limit = static_cast<Eigen::Index>(state.integer("exact_limit", 1, 1LL << 40));
+  options.local_neighbours =
+      static_cast<Eigen::Index>(state.integer("local_neighbours", 1, 1LL << 40));
+  rbf_model::validate(positions_m, values_m, options);
+  auto impl = std::make_unique<Impl>();
+  impl->positions_m = positions_m;
+  impl->values_m = values_m;
+  impl->options = options;
+  impl->index.emplace(positions_m);
+  impl->frame.centre_m = state.array("frame_centre_m", 3, 1);
+  impl->frame.scale_m = state.number("frame_scale_m");
+  VRREG_THROW_UNLESS(impl->frame.scale_m > 0.0, "the saved rbf corrector's frame scale is not > 0");
+  const Eigen::Index terms = detail::trend_terms(options.polynomial_degree);
+  for (int axis = 0; axis < 3; ++axis) {
+    detail::RbfAxis& a = impl->axes[static_cast<std::size_t>(axis)];
+    a.smoothing = state.number(rbf_key(axis, "smoothing"));
+    a.loo_rms = state.number(rbf_key(axis, "loo_rms_m"));
+    if (impl->exact()) {
+      a.weights = state.array(rbf_key(axis, "weights"), positions_m.cols(), 1);
+      a.coefficients = state.array(rbf_key(axis, "coefficients"), terms, 1);
+    }
+  }
+  return RbfModel(std::move(impl));
+}
+
+}  // namespace vrreg

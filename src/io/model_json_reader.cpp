@@ -5,8 +5,10 @@
 #include <sstream>
 
 #include "json_fields.hpp"
+#include "corrector_json.hpp"
 #include "model_chain_json.hpp"
 #include "model_marker_offset_json.hpp"
+#include "model_units.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/input_file.hpp"
@@ -18,14 +20,15 @@ namespace vrreg::io {
 namespace {
 
 using nlohmann::json;
-constexpr double kMmPerM = units::kMillimetresPerMetre;
+using detail::LengthUnits;
 constexpr double kRotationTolerance = 1e-9;
 
 json parse_document(const std::string& text, const std::string& source) {
   return parse_json_document(text, source, "model file");
 }
 
-void check_header(const json& doc, const detail::JsonFields& f, const std::string& source) {
+// The file's version and its length unit: version 1 wrote millimetres, version 2 metres.
+LengthUnits check_header(const json& doc, const detail::JsonFields& f, const std::string& source) {
   f.require_object(doc, "");
   const json& format = f.member(doc, "", "format");
   if (!format.is_string() || format.get<std::string>() != "vrreg-model") {
@@ -34,16 +37,20 @@ void check_header(const json& doc, const detail::JsonFields& f, const std::strin
                         ", expected \"vrreg-model\")");
   }
   const json& version = f.member(doc, "", "version");
-  if (!version.is_number_integer() ||
-      version.get<std::int64_t>() != RegistrationModel::kFormatVersion) {
+  if (!version.is_number_integer() || version.get<std::int64_t>() < 1 ||
+      version.get<std::int64_t>() > RegistrationModel::kFormatVersion) {
     throw FileError(source, 0,
                     "unsupported model version " + quote_value(version) +
-                        "; this vrreg reads version " +
+                        "; this vrreg reads versions 1 to " +
                         std::to_string(RegistrationModel::kFormatVersion));
   }
+  const bool v1 = version.get<std::int64_t>() == 1;
   const json& units = f.member(doc, "", "units");
-  if (f.string(units, "units", "length") != "mm") f.fail("units.length", "expected \"mm\"");
+  if (f.string(units, "units", "length") != (v1 ? "mm" : "m")) {
+    f.fail("units.length", v1 ? "expected \"mm\"" : "expected \"m\"");
+  }
   if (f.string(units, "units", "angle") != "rad") f.fail("units.angle", "expected \"rad\"");
+  return v1 ? detail::kMillimetres : detail::kMetres;
 }
 
 Eigen::Matrix3d read_rotation(const json& doc, const detail::JsonFields& f) {
@@ -68,27 +75,27 @@ Eigen::Matrix3d read_rotation(const json& doc, const detail::JsonFields& f) {
 }
 
 Location read_fiducial(const json& item, const std::string& path, const detail::JsonFields& f,
-                       Eigen::Vector3d& correction_m) {
+                       const LengthUnits& u, Eigen::Vector3d& correction_m) {
   Location loc;
   loc.role = Role::kFiducial;
   loc.has_robot = true;
   loc.point = f.string(item, path, "point");
   if (loc.point.empty()) f.fail(detail::join_path(path, "point"), "empty point label");
   loc.config = f.optional_integer(item, path, "config");
-  loc.robot_m = f.vector3(item, path, "robot_mm", kMmPerM);
-  loc.sensor_m = f.vector3(item, path, "sensor_mm", kMmPerM);
+  loc.robot_m = f.vector3(item, path, u.key("robot"), u.per_m);
+  loc.sensor_m = f.vector3(item, path, u.key("sensor"), u.per_m);
   loc.n_readings = f.integer(item, path, "n_readings");
   if (loc.n_readings < 1) f.fail(detail::join_path(path, "n_readings"), "must be at least 1");
-  loc.sensor_sq_dev_m2 = f.vector3(item, path, "sensor_sq_dev_mm2", kMmPerM * kMmPerM);
+  loc.sensor_sq_dev_m2 = f.vector3(item, path, u.area_key("sensor_sq_dev"), u.per_m * u.per_m);
   if (loc.sensor_sq_dev_m2.minCoeff() < 0.0)
-    f.fail(detail::join_path(path, "sensor_sq_dev_mm2"), "negative");
+    f.fail(detail::join_path(path, u.area_key("sensor_sq_dev")), "negative");
   if (item.contains("line")) {
     const int line = f.integer(item, path, "line");
     if (line < 1) f.fail(detail::join_path(path, "line"), "must be at least 1");
     loc.source_line = static_cast<std::size_t>(line);
   }
   if (item.contains("q_rad")) loc.q_rad = f.numbers(item, path, "q_rad", -1);
-  correction_m = f.vector3(item, path, "correction_mm", kMmPerM);
+  correction_m = f.vector3(item, path, u.key("correction"), u.per_m);
   return loc;
 }
 
@@ -127,7 +134,7 @@ planning::Procedure2 read_procedure2(const json& doc, const detail::JsonFields& 
 }
 
 // sigma_l_sampling: how a sampled sigma_L was estimated (model_json.hpp).
-SigmaLSampling read_sampling(const json& doc, const detail::JsonFields& f) {
+SigmaLSampling read_sampling(const json& doc, const detail::JsonFields& f, const LengthUnits& u) {
   const json& s = f.member(doc, "", "sigma_l_sampling");
   f.require_object(s, "sigma_l_sampling");
   const auto count = [&](const char* key) {
@@ -148,12 +155,12 @@ SigmaLSampling read_sampling(const json& doc, const detail::JsonFields& f) {
   if (!(out.confidence > 0.0 && out.confidence < 1.0)) {
     f.fail("sigma_l_sampling.confidence", "must be in (0, 1)");
   }
-  const std::vector<double> interval = f.numbers(s, "sigma_l_sampling", "interval_mm", 2);
+  const std::vector<double> interval = f.numbers(s, "sigma_l_sampling", u.key("interval"), 2);
   if (interval[0] < 0.0 || interval[1] < interval[0]) {
-    f.fail("sigma_l_sampling.interval_mm", "must be [low, high] with 0 <= low <= high");
+    f.fail("sigma_l_sampling." + u.key("interval"), "must be [low, high] with 0 <= low <= high");
   }
-  out.sigma_l_low_m = interval[0] / kMmPerM;
-  out.sigma_l_high_m = interval[1] / kMmPerM;
+  out.sigma_l_low_m = interval[0] / u.per_m;
+  out.sigma_l_high_m = interval[1] / u.per_m;
   return out;
 }
 
@@ -162,36 +169,36 @@ SigmaLSampling read_sampling(const json& doc, const detail::JsonFields& f) {
 RegistrationModel parse_model_json(const std::string& text, const std::string& source) {
   const json doc = parse_document(text, source);
   const detail::JsonFields f(source);
-  check_header(doc, f, source);
+  const LengthUnits u = check_header(doc, f, source);
   RegistrationModel model;
   model.T_robot_sensor.rotation = read_rotation(doc, f);
-  model.T_robot_sensor.translation_m = f.vector3(doc, "", "translation_mm", kMmPerM);
+  model.T_robot_sensor.translation_m = f.vector3(doc, "", u.key("translation"), u.per_m);
   model.T_robot_sensor.scale = f.number(doc, "", "scale");
   if (model.T_robot_sensor.scale <= 0.0) f.fail("scale", "must be positive");
-  model.fre_m = f.number(doc, "", "fre_mm") / kMmPerM;
-  model.sigma_l_m = f.number(doc, "", "sigma_l_mm") / kMmPerM;
-  if (model.fre_m < 0.0) f.fail("fre_mm", "negative");
-  if (model.sigma_l_m < 0.0) f.fail("sigma_l_mm", "negative");
-  if (doc.contains("sigma_l_sampling")) model.sigma_l_sampling = read_sampling(doc, f);
+  model.fre_m = f.number(doc, "", u.key("fre")) / u.per_m;
+  model.sigma_l_m = f.number(doc, "", u.key("sigma_l")) / u.per_m;
+  if (model.fre_m < 0.0) f.fail(u.key("fre"), "negative");
+  if (model.sigma_l_m < 0.0) f.fail(u.key("sigma_l"), "negative");
+  if (doc.contains("sigma_l_sampling")) model.sigma_l_sampling = read_sampling(doc, f, u);
   model.config = f.optional_integer(doc, "", "config");
-  if (doc.contains("sigma_rep_mm")) {
-    model.sigma_rep_m = f.number(doc, "", "sigma_rep_mm") / kMmPerM;
-    if (*model.sigma_rep_m < 0.0) f.fail("sigma_rep_mm", "negative");
+  if (doc.contains(u.key("sigma_rep"))) {
+    model.sigma_rep_m = f.number(doc, "", u.key("sigma_rep")) / u.per_m;
+    if (*model.sigma_rep_m < 0.0) f.fail(u.key("sigma_rep"), "negative");
   }
   model.source = f.string(doc, "", "source");
   const json& interp = f.member(doc, "", "interpolation");
   const std::string method = f.string(interp, "interpolation", "method");
   try {
-    model.interpolation.method = parse_interpolation_method(method, /*legacy_auto=*/true);
+    model.interpolation.method = parse_interpolation_method(method, /*legacy_auto=*/u.per_m != 1.0);
   } catch (const InputError& e) {
     f.fail("interpolation.method", e.what());
   }
-  model.interpolation.cube_edge_m = f.number(interp, "interpolation", "cube_mm") / kMmPerM;
+  model.interpolation.cube_edge_m = f.number(interp, "interpolation", u.key("cube")) / u.per_m;
   model.interpolation.match_tolerance_m =
-      f.number(interp, "interpolation", "match_tolerance_mm") / kMmPerM;
-  if (model.interpolation.cube_edge_m < 0.0) f.fail("interpolation.cube_mm", "negative");
+      f.number(interp, "interpolation", u.key("match_tolerance")) / u.per_m;
+  if (model.interpolation.cube_edge_m < 0.0) f.fail("interpolation." + u.key("cube"), "negative");
   if (model.interpolation.match_tolerance_m < 0.0) {
-    f.fail("interpolation.match_tolerance_mm", "negative");
+    f.fail("interpolation." + u.key("match_tolerance"), "negative");
   }
   const json& fiducials = f.member(doc, "", "fiducials");
   if (!fiducials.is_array())
@@ -201,14 +208,26 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
   for (std::size_t j = 0; j < fiducials.size(); ++j) {
     Eigen::Vector3d correction_m;
     model.fiducials.push_back(
-        read_fiducial(fiducials[j], "fiducials[" + std::to_string(j) + "]", f, correction_m));
+        read_fiducial(fiducials[j], "fiducials[" + std::to_string(j) + "]", f, u, correction_m));
     model.corrections_sensor_m.col(static_cast<Eigen::Index>(j)) = correction_m;
   }
   model.procedure2 = read_procedure2(doc, f, model.fiducials.size());
   if (doc.contains("marker_offset")) {
-    model.marker_offset = detail::read_marker_offset(doc.at("marker_offset"), "marker_offset", f);
+    model.marker_offset =
+        detail::read_marker_offset(doc.at("marker_offset"), "marker_offset", f, u);
   }
   if (doc.contains("robot")) model.robot = detail::read_chain(doc.at("robot"), "robot", f);
+  if (doc.contains("corrector")) {
+    const SavedCorrector saved = detail::read_corrector(doc.at("corrector"), "corrector", f);
+    try {
+      model.validate();
+      model.corrector = restore_corrector(model, saved);
+    } catch (const FileError&) {
+      throw;
+    } catch (const InputError& e) {
+      f.fail("corrector", e.what());
+    }
+  }
   return model;
 }
 

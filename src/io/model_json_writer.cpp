@@ -5,6 +5,7 @@
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/model_json.hpp"
+#include "corrector_json.hpp"
 #include "model_chain_json.hpp"
 #include "model_marker_offset_json.hpp"
 
@@ -18,18 +19,9 @@ double finite(double value, const char* key) {
   return value;
 }
 
-ordered_json mm_array(const Eigen::Vector3d& v_m, const char* key) {
+ordered_json m_array(const Eigen::Vector3d& v_m, const char* key) {
   ordered_json out = ordered_json::array();
-  for (int axis = 0; axis < 3; ++axis) out.push_back(finite(units::m_to_mm(v_m(axis)), key));
-  return out;
-}
-
-ordered_json mm2_array(const Eigen::Vector3d& v_m2, const char* key) {
-  ordered_json out = ordered_json::array();
-  for (int axis = 0; axis < 3; ++axis) {
-    out.push_back(
-        finite(v_m2(axis) * units::kMillimetresPerMetre * units::kMillimetresPerMetre, key));
-  }
+  for (int axis = 0; axis < 3; ++axis) out.push_back(finite(v_m(axis), key));
   return out;
 }
 
@@ -41,17 +33,17 @@ ordered_json fiducial_json(const Location& f, const Eigen::Vector3d& correction_
   ordered_json out = ordered_json::object();
   out["point"] = f.point;
   out["config"] = optional_int(f.config);
-  out["robot_mm"] = mm_array(f.robot_m, "fiducial robot_mm");
-  out["sensor_mm"] = mm_array(f.sensor_m, "fiducial sensor_mm");
+  out["robot_m"] = m_array(f.robot_m, "fiducial robot_m");
+  out["sensor_m"] = m_array(f.sensor_m, "fiducial sensor_m");
   out["n_readings"] = f.n_readings;
   if (f.source_line > 0) out["line"] = f.source_line;
-  out["sensor_sq_dev_mm2"] = mm2_array(f.sensor_sq_dev_m2, "fiducial sensor_sq_dev_mm2");
+  out["sensor_sq_dev_m2"] = m_array(f.sensor_sq_dev_m2, "fiducial sensor_sq_dev_m2");
   if (!f.q_rad.empty()) {
     ordered_json q = ordered_json::array();
     for (const double v : f.q_rad) q.push_back(finite(v, "fiducial q_rad"));
     out["q_rad"] = std::move(q);
   }
-  out["correction_mm"] = mm_array(correction_m, "fiducial correction_mm");
+  out["correction_m"] = m_array(correction_m, "fiducial correction_m");
   return out;
 }
 
@@ -61,9 +53,9 @@ ordered_json sampling_json(const SigmaLSampling& s) {
           {"pairs_total", s.pairs_total},
           {"seed", s.seed},
           {"confidence", finite(s.confidence, "sigma_l_sampling.confidence")},
-          {"interval_mm",
-           {finite(units::m_to_mm(s.sigma_l_low_m), "sigma_l_sampling.interval_mm"),
-            finite(units::m_to_mm(s.sigma_l_high_m), "sigma_l_sampling.interval_mm")}}};
+          {"interval_m",
+           {finite(s.sigma_l_low_m, "sigma_l_sampling.interval_m"),
+            finite(s.sigma_l_high_m, "sigma_l_sampling.interval_m")}}};
 }
 
 // Procedure 2 (paper section 4.4): written only for models built with a strategy.
@@ -94,7 +86,7 @@ std::string format_model_json(const RegistrationModel& model) {
   ordered_json out = ordered_json::object();
   out["format"] = "vrreg-model";
   out["version"] = RegistrationModel::kFormatVersion;
-  out["units"] = {{"length", "mm"}, {"angle", "rad"}};
+  out["units"] = {{"length", "m"}, {"angle", "rad"}};
   ordered_json rotation = ordered_json::array();
   for (int r = 0; r < 3; ++r) {
     ordered_json row = ordered_json::array();
@@ -102,14 +94,14 @@ std::string format_model_json(const RegistrationModel& model) {
     rotation.push_back(std::move(row));
   }
   out["rotation"] = std::move(rotation);
-  out["translation_mm"] = mm_array(T.translation_m, "translation_mm");
+  out["translation_m"] = m_array(T.translation_m, "translation_m");
   out["scale"] = finite(T.scale, "scale");
-  out["fre_mm"] = finite(units::m_to_mm(model.fre_m), "fre_mm");
-  out["sigma_l_mm"] = finite(units::m_to_mm(model.sigma_l_m), "sigma_l_mm");
+  out["fre_m"] = finite(model.fre_m, "fre_m");
+  out["sigma_l_m"] = finite(model.sigma_l_m, "sigma_l_m");
   if (model.sigma_l_sampling.sampled)
     out["sigma_l_sampling"] = sampling_json(model.sigma_l_sampling);
   if (model.sigma_rep_m)
-    out["sigma_rep_mm"] = finite(units::m_to_mm(*model.sigma_rep_m), "sigma_rep_mm");
+    out["sigma_rep_m"] = finite(*model.sigma_rep_m, "sigma_rep_m");
   out["config"] = optional_int(model.config);
   if (model.procedure2.strategy != planning::Strategy::kNone)
     out["procedure2"] = procedure2_json(model);
@@ -118,15 +110,15 @@ std::string format_model_json(const RegistrationModel& model) {
   if (model.robot) out["robot"] = detail::chain_json(*model.robot, true, "robot");
   out["interpolation"] = {
       {"method", to_string(model.interpolation.method)},
-      {"cube_mm", finite(units::m_to_mm(model.interpolation.cube_edge_m), "cube_mm")},
-      {"match_tolerance_mm",
-       finite(units::m_to_mm(model.interpolation.match_tolerance_m), "match_tolerance_mm")}};
+      {"cube_m", finite(model.interpolation.cube_edge_m, "cube_m")},
+      {"match_tolerance_m", finite(model.interpolation.match_tolerance_m, "match_tolerance_m")}};
   ordered_json fiducials = ordered_json::array();
   for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
     fiducials.push_back(fiducial_json(
         model.fiducials[j], model.corrections_sensor_m.col(static_cast<Eigen::Index>(j))));
   }
   out["fiducials"] = std::move(fiducials);
+  if (model.corrector) out["corrector"] = detail::corrector_json(model.corrector->save());
   try {
     return out.dump(2) + "\n";
   } catch (const ordered_json::type_error& e) {  // invalid UTF-8 in a label or the source name

@@ -1,5 +1,6 @@
 #include "vrreg/pipeline/correct.hpp"
 
+#include "model_corrector.hpp"
 #include "procedure2_steps.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
@@ -42,10 +43,10 @@ CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& 
     }
     nominal = set->robot_points(rows);
   }
-  out.correction = pipeline_detail::correct_rows(model, *set, rows, out.interpolation, strategy,
-                                                 norm, nominal,
-                                                 options.robot ? options.robot : model.robot,
-                                                 &out.cross_validation);
+  const pipeline_detail::CorrectorRequest request{out.interpolation, strategy, norm, options.robot,
+                                                  options.refit, options.exact};
+  out.correction =
+      pipeline_detail::correct_rows(model, *set, rows, request, nominal, &out.cross_validation);
   pipeline_detail::labels_of(*set, rows, out.names, out.configs);
   return out;
 }
@@ -59,8 +60,7 @@ CorrectResult correct(const RegistrationModel& model, const MeasurementSet& poin
 
 CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& points,
                       const CorrectOptions& options) {
-  const bool per_point = !is_field_model(options.interpolation.apply(model.interpolation).method) &&
-                         model.procedure2.strategy != Strategy::kAlongPath &&
+  const bool per_point = model.procedure2.strategy != Strategy::kAlongPath &&
                          model.procedure2.strategy != Strategy::kVolumeCorners &&
                          !options.config && !model.config && !model.marker_offset;
   if (!per_point) {  // labels and joints decide which points and which fiducials: the set's way
@@ -74,15 +74,29 @@ CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& poin
   points.validate(false);
   CorrectResult out;
   out.interpolation = options.interpolation.apply(model.interpolation);
-  const bool octuplet = out.interpolation.method == InterpolationMethod::kOctuplet;
-  VRREG_THROW_UNLESS(!octuplet || points.robot_m.cols() == points.size(),
-                     "octuplet interpolation needs the nominal robot position of every point "
-                     "(robot_m)");
+  const pipeline_detail::CorrectorRequest request{out.interpolation, model.procedure2.strategy,
+                                                  model.procedure2.joint_norm, options.robot,
+                                                  options.refit, options.exact};
+  const Corrector corrector = pipeline_detail::corrector_for(model, request);
+  if (out.interpolation.method == InterpolationMethod::kAuto) {
+    out.cross_validation = corrector.cross_validation();
+  }
+  const MethodNeeds needs = corrector.needs();
+  VRREG_THROW_UNLESS(!needs.nominal_robot || points.robot_m.cols() == points.size(),
+                     to_string(corrector.method())
+                         << " interpolation needs the nominal robot position of every point "
+                            "(robot_m)");
+  VRREG_THROW_UNLESS(!needs.joints || points.joints_rad.cols() == points.size(),
+                     to_string(corrector.method())
+                         << " interpolation needs the joint angles of every point (joints_rad)");
   // Points given in memory were read at no file line: sequence 0, as the set's way has it.
-  const std::vector<std::size_t> sequence(octuplet ? static_cast<std::size_t>(points.size()) : 0, 0);
-  out.correction = correct_targets(model.correction_field(), points.sensor_m,
-                                   octuplet ? points.robot_m : Points3(3, 0), out.interpolation,
-                                   sequence);
+  const std::vector<std::size_t> sequence(
+      needs.nominal_robot ? static_cast<std::size_t>(points.size()) : 0, 0);
+  const Points3 no_points(3, 0);
+  const Eigen::MatrixXd no_joints(0, 0);
+  out.correction = corrector.correct(
+      CorrectionQuery(points.sensor_m, needs.nominal_robot ? points.robot_m : no_points,
+                      needs.joints ? points.joints_rad : no_joints, sequence));
   out.names = points.names;
   for (const int config : points.configs) out.configs.emplace_back(config);
   return out;

@@ -59,9 +59,10 @@ EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet
       pipeline_detail::select_rows(*set, Role::kTarget, out.config);
   out.targets_robot_m = set->robot_points(rows);
   out.interpolation = options.interpolation.apply(model.interpolation);
-  out.correction = pipeline_detail::correct_rows(model, *set, rows, out.interpolation, out.strategy,
-                                                 norm, out.targets_robot_m,
-                                                 options.robot ? options.robot : model.robot,
+  const pipeline_detail::CorrectorRequest request{out.interpolation, out.strategy, norm,
+                                                  options.robot, options.refit,
+                                                  options.exact};
+  out.correction = pipeline_detail::correct_rows(model, *set, rows, request, out.targets_robot_m,
                                                  &out.cross_validation);
   // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.
   out.unc_tre_m = point_errors(out.correction.uncorrected_robot_m, out.targets_robot_m);  // Eq. 3

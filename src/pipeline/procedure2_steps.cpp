@@ -2,11 +2,9 @@
 
 #include <string>
 
-#include "field_correction.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
-#include "vrreg/planning/strategy3_correction.hpp"
 #include "vrreg/planning/strategy3_registration.hpp"
 
 namespace vrreg::pipeline_detail {
@@ -71,58 +69,45 @@ RegistrationModel volume_corner_model(const MeasurementSet& set, const planning:
   return model;
 }
 
-TargetCorrection correct_volume_corners(const RegistrationModel& model, const MeasurementSet& set,
-                                        const std::vector<std::size_t>& rows,
-                                        const InterpolationSettings& settings,
-                                        kinematics::JointNorm norm) {
-  require_configurations(set, planning::Strategy::kVolumeCorners);
-  if (settings.method != InterpolationMethod::kOctuplet &&
-      settings.method != InterpolationMethod::kLinear) {
-    fail(set, std::string("--strategy 3 corrects with octuplets, not --interpolation ") +
+TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
+                              const std::vector<std::size_t>& rows,
+                              const CorrectorRequest& request, const Points3& nominal_robot_m,
+                              std::optional<CrossValidation>* cross_validation) {
+  const InterpolationSettings& settings = request.settings;
+  if (request.strategy == planning::Strategy::kVolumeCorners) {
+    require_configurations(set, planning::Strategy::kVolumeCorners);
+    if (settings.method != InterpolationMethod::kOctuplet &&
+        settings.method != InterpolationMethod::kLinear) {
+      fail(set, std::string("--strategy 3 corrects with octuplets, not --interpolation ") +
+                    to_string(settings.method));
+    }
+  }
+  const bool field = is_field_model(settings.method);
+  if (field && request.strategy == planning::Strategy::kAlongPath) {
+    fail(set, std::string("--strategy 2 corrects with the paper's stencils, not --interpolation ") +
                   to_string(settings.method));
   }
-  planning::Strategy3CorrectionOptions options;
-  options.cube_edge_m = settings.cube_edge_m;
-  options.match_tolerance_m = settings.match_tolerance_m;
-  options.norm = norm;
+  const auto correct = [&] {
+    const Corrector corrector = corrector_for(model, request);
+    if (cross_validation != nullptr && settings.method == InterpolationMethod::kAuto) {
+      *cross_validation = corrector.cross_validation();
+    }
+    const Eigen::MatrixXd joints =
+        corrector.needs().joints ? joints_of(set, rows) : Eigen::MatrixXd(0, 0);
+    const std::vector<std::size_t> lines = source_lines(set, rows);
+    return corrector.correct(
+        CorrectionQuery(set.sensor_points(rows), nominal_robot_m, joints, lines));
+  };
+  // The field models and Strategy 3 need more of the targets' file (joints, configurations):
+  // their errors name it.
+  if (!field && request.strategy != planning::Strategy::kVolumeCorners) return correct();
   try {
-    return planning::correct_targets_strategy3(model.T_robot_sensor, model.fiducials,
-                                               model.corrections_sensor_m, locations_of(set, rows),
-                                               options);
+    return correct();
+  } catch (const FileError&) {
+    throw;
   } catch (const InputError& e) {
     fail(set, e.what());
   }
-}
-
-TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
-                              const std::vector<std::size_t>& rows,
-                              const InterpolationSettings& settings, planning::Strategy strategy,
-                              kinematics::JointNorm norm, const Points3& nominal_robot_m,
-                              const std::optional<kinematics::SerialChain>& robot,
-                              std::optional<CrossValidation>* cross_validation) {
-  if (strategy == planning::Strategy::kVolumeCorners) {
-    return correct_volume_corners(model, set, rows, settings, norm);
-  }
-  if (is_field_model(settings.method)) {
-    if (strategy == planning::Strategy::kAlongPath) {
-      fail(set, std::string("--strategy 2 corrects with the paper's stencils, not --interpolation ") +
-                    to_string(settings.method));
-    }
-    try {
-      const FieldData data = field_data(model, robot);
-      FittedField field = fit_field(settings.method, data);
-      if (cross_validation != nullptr) *cross_validation = field.cross_validation;
-      Eigen::MatrixXd joints;
-      if (field.method == InterpolationMethod::kJoint) joints = joints_of(set, rows);
-      return correct_with_field(field, data, set.sensor_points(rows), joints);
-    } catch (const FileError&) {
-      throw;
-    } catch (const InputError& e) {
-      fail(set, e.what());
-    }
-  }
-  return correct_targets(model.correction_field(), set.sensor_points(rows), nominal_robot_m,
-                         settings, source_lines(set, rows));
 }
 
 }  // namespace vrreg::pipeline_detail

@@ -6,9 +6,10 @@
 #include <optional>
 #include <vector>
 
+#include "model_corrector.hpp"
 #include "vrreg/core/measurement.hpp"
+#include "vrreg/correction/cross_validation.hpp"
 #include "vrreg/correction/correct_targets.hpp"
-#include "vrreg/pipeline/field_model.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/planning/strategy2_labels.hpp"
 #include "vrreg/registration/rigid.hpp"
@@ -29,24 +30,14 @@ RegistrationModel volume_corner_model(const MeasurementSet& set, const planning:
                                       RegistrationResult& registration_result,
                                       Points3& registered_sensor_m, Points3& registered_robot_m);
 
-/// Strategy 3 correction of the `rows` of `set` with the model's single registration.
-TargetCorrection correct_volume_corners(const RegistrationModel& model, const MeasurementSet& set,
-                                        const std::vector<std::size_t>& rows,
-                                        const InterpolationSettings& settings,
-                                        kinematics::JointNorm norm);
-
-/// The `rows` of `set` corrected with the model (Eq. 7, 8) as `strategy` says: Strategy 3's
-/// nearest-configuration octuplets, else `settings` on the model's correction field with the rows'
-/// file lines as their visiting order. nominal_robot_m: the rows' nominal robot positions [m], or
-/// 0 columns where the interpolation does not need them.
-/// A field model (docs/field-models.md) instead when settings.method is one: fitted on the
-/// model's fiducials (`robot` for the joint-space model), its cross-validation table, when `auto`
-/// chose, into `cross_validation`.
+/// The `rows` of `set` corrected (Eq. 7, 8) by the model's corrector for `request`, or one fitted
+/// now (model_corrector.hpp): Strategy 3's nearest-configuration octuplets, the paper's stencils
+/// with the rows' file lines as their visiting order, or a field model (docs/field-models.md).
+/// nominal_robot_m: the rows' nominal robot positions [m], or 0 columns where the method does not
+/// need them. `cross_validation` receives auto's table when auto was asked.
 TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
                               const std::vector<std::size_t>& rows,
-                              const InterpolationSettings& settings, planning::Strategy strategy,
-                              kinematics::JointNorm norm, const Points3& nominal_robot_m,
-                              const std::optional<kinematics::SerialChain>& robot = std::nullopt,
+                              const CorrectorRequest& request, const Points3& nominal_robot_m,
                               std::optional<CrossValidation>* cross_validation = nullptr);
 
 }  // namespace vrreg::pipeline_detail

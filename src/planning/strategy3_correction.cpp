@@ -1,36 +1,70 @@
+// Strategy 3's correction through the nearest-configuration correction method
+// (correction/corrector.hpp), on fiducials and targets given as locations.
 #include "vrreg/planning/strategy3_correction.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
-#include "vrreg/correction/corner_candidates.hpp"
+#include "vrreg/correction/corrector.hpp"
 
 namespace vrreg::planning {
 namespace {
 
-Eigen::Map<const Eigen::VectorXd> joints_of(const Location& loc) {
-  return {loc.q_rad.data(), static_cast<Eigen::Index>(loc.q_rad.size())};
+// Joint angles of `locations`, one column each; every location must have `n` of them.
+Eigen::MatrixXd joints_of(const std::vector<Location>& locations, std::size_t n, const char* what) {
+  Eigen::MatrixXd q(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(locations.size()));
+  for (std::size_t k = 0; k < locations.size(); ++k) {
+    const Location& loc = locations[k];
+    VRREG_THROW_UNLESS(!loc.q_rad.empty(),
+                       "Strategy 3: " << what << " '" << loc.point << "' has no joints (q1_rad..qN_rad)");
+    VRREG_THROW_UNLESS(loc.q_rad.size() == n, "Strategy 3: " << what << " '" << loc.point
+                                                              << "' has " << loc.q_rad.size()
+                                                              << " joints, expected " << n);
+    q.col(static_cast<Eigen::Index>(k)) =
+        Eigen::Map<const Eigen::VectorXd>(loc.q_rad.data(), static_cast<Eigen::Index>(n));
+  }
+  return q;
 }
 
-// The candidate whose joints are nearest the target's (ties: the first).
-Eigen::Index nearest_candidate(const std::vector<Location>& fiducials,
-                               const std::vector<Eigen::Index>& candidates, const Location& target,
-                               kinematics::JointNorm norm) {
-  Eigen::MatrixXd q(static_cast<Eigen::Index>(target.q_rad.size()),
-                    static_cast<Eigen::Index>(candidates.size()));
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    const Location& f = fiducials[static_cast<std::size_t>(candidates[k])];
-    VRREG_THROW_UNLESS(f.q_rad.size() == target.q_rad.size(),
-                       "Strategy 3: fiducial '" << f.point << "' has " << f.q_rad.size()
-                                                << " joints, target '" << target.point << "' "
-                                                << target.q_rad.size());
-    q.col(static_cast<Eigen::Index>(k)) = joints_of(f);
+Corrector strategy3_corrector(const SimilarityTransform& T_robot_sensor,
+                              const std::vector<Location>& fiducials,
+                              const ConstPoints3Ref& corrections_sensor_m,
+                              const Strategy3CorrectionOptions& options) {
+  options.validate();
+  VRREG_THROW_UNLESS(!fiducials.empty(), "the model has no fiducials to correct with");
+  VRREG_THROW_UNLESS(
+      corrections_sensor_m.cols() == static_cast<Eigen::Index>(fiducials.size()),
+      "the model has " << corrections_sensor_m.cols() << " fiducial corrections for "
+                       << fiducials.size() << " fiducials");
+  CorrectorData data;
+  data.T_robot_sensor = T_robot_sensor;
+  data.fiducials_robot_m.resize(3, static_cast<Eigen::Index>(fiducials.size()));
+  for (std::size_t j = 0; j < fiducials.size(); ++j)
+    data.fiducials_robot_m.col(static_cast<Eigen::Index>(j)) = fiducials[j].robot_m;
+  data.corrections_sensor_m = corrections_sensor_m;
+  // Eq. 6 backwards: R X_j + tau = Y_j - s R epsilon_j.
+  data.registered_robot_m =
+      data.fiducials_robot_m - T_robot_sensor.scale * (T_robot_sensor.rotation * corrections_sensor_m);
+  data.joints_rad = joints_of(fiducials, fiducials.front().q_rad.size(), "fiducial");
+  CorrectorOptions corrector;
+  corrector.interpolation.method = InterpolationMethod::kOctuplet;
+  corrector.interpolation.cube_edge_m = options.cube_edge_m;
+  corrector.interpolation.match_tolerance_m = options.match_tolerance_m;
+  corrector.nearest_configuration = options.norm;
+  return Corrector::fit(data, corrector);
+}
+
+TargetCorrection correct(const Corrector& corrector, const std::vector<Location>& targets,
+                         std::size_t n_joints) {
+  Points3 sensor(3, static_cast<Eigen::Index>(targets.size()));
+  Points3 robot(3, sensor.cols());
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    sensor.col(static_cast<Eigen::Index>(t)) = targets[t].sensor_m;
+    robot.col(static_cast<Eigen::Index>(t)) = targets[t].robot_m;
   }
-  return candidates[static_cast<std::size_t>(
-      *kinematics::nearest_configuration(q, joints_of(target), norm))];
+  return corrector.correct(
+      CorrectionQuery(sensor, robot, joints_of(targets, n_joints, "target")));
 }
 
 }  // namespace
@@ -47,33 +81,9 @@ void Strategy3CorrectionOptions::validate() const {
 std::vector<Stencil> nearest_configuration_stencils(const std::vector<Location>& fiducials,
                                                     const std::vector<Location>& targets,
                                                     const Strategy3CorrectionOptions& options) {
-  options.validate();
-  Points3 robot(3, static_cast<Eigen::Index>(fiducials.size()));
-  for (std::size_t j = 0; j < fiducials.size(); ++j) {
-    robot.col(static_cast<Eigen::Index>(j)) = fiducials[j].robot_m;
-  }
-  const CornerCandidates candidates(robot, options.match_tolerance_m);
-  std::vector<Stencil> out(targets.size());
-  for (std::size_t t = 0; t < targets.size(); ++t) {
-    const Location& target = targets[t];
-    VRREG_THROW_UNLESS(!target.q_rad.empty(), "Strategy 3: target '"
-                                                  << target.point
-                                                  << "' has no joints (q1_rad..qN_rad)");
-    const CornerFiducials corners = candidates.octuplet(target.robot_m, options.cube_edge_m);
-    Stencil& s = out[t];
-    const bool complete =
-        std::none_of(corners.begin(), corners.end(), [](const auto& c) { return c.empty(); });
-    if (!complete) {
-      s.status = StencilStatus::kMissingCorner;
-      continue;
-    }
-    for (std::size_t c = 0; c < 8; ++c) {
-      s.fiducial[c] = nearest_candidate(fiducials, corners[c], target, options.norm);
-      s.weight[c] = 0.125;
-    }
-    s.size = 8;
-  }
-  return out;
+  const Points3 none = Points3::Zero(3, static_cast<Eigen::Index>(fiducials.size()));
+  const Corrector c = strategy3_corrector(SimilarityTransform(), fiducials, none, options);
+  return correct(c, targets, fiducials.front().q_rad.size()).stencils;
 }
 
 TargetCorrection correct_targets_strategy3(const SimilarityTransform& T_robot_sensor,
@@ -81,38 +91,8 @@ TargetCorrection correct_targets_strategy3(const SimilarityTransform& T_robot_se
                                            const ConstPoints3Ref& corrections_sensor_m,
                                            const std::vector<Location>& targets,
                                            const Strategy3CorrectionOptions& options) {
-  VRREG_THROW_UNLESS(!fiducials.empty(), "the model has no fiducials to correct with");
-  VRREG_THROW_UNLESS(
-      corrections_sensor_m.cols() == static_cast<Eigen::Index>(fiducials.size()),
-      "the model has " << corrections_sensor_m.cols() << " fiducial corrections for "
-                       << fiducials.size() << " fiducials");
-  TargetCorrection out;
-  out.method_used = InterpolationMethod::kOctuplet;
-  std::ostringstream layout;
-  layout << "octuplet, cube edge " << units::m_to_mm(options.cube_edge_m)
-         << " mm, each corner in the configuration nearest the target's ("
-         << kinematics::to_string(options.norm) << ")";
-  out.layout = layout.str();
-  out.stencils = nearest_configuration_stencils(fiducials, targets, options);
-  const auto n = static_cast<Eigen::Index>(targets.size());
-  out.corrections_sensor_m = Points3::Zero(3, n);
-  out.corrected_sensor_m.resize(3, n);
-  out.corrected_robot_m.resize(3, n);
-  out.uncorrected_robot_m.resize(3, n);
-  const SimilarityTransform& T = T_robot_sensor;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Location& target = targets[static_cast<std::size_t>(i)];
-    const Stencil& s = out.stencils[static_cast<std::size_t>(i)];
-    if (s.status == StencilStatus::kOk) {
-      out.corrections_sensor_m.col(i) = interpolate_correction(s, corrections_sensor_m);
-    } else {
-      ++out.n_flagged;
-    }
-    out.corrected_sensor_m.col(i) = target.sensor_m + out.corrections_sensor_m.col(i);
-    out.uncorrected_robot_m.col(i) = T.apply(target.sensor_m);
-    out.corrected_robot_m.col(i) = T.apply(out.corrected_sensor_m.col(i));
-  }
-  return out;
+  const Corrector c = strategy3_corrector(T_robot_sensor, fiducials, corrections_sensor_m, options);
+  return correct(c, targets, fiducials.front().q_rad.size());
 }
 
 }  // namespace vrreg::planning

@@ -68,7 +68,7 @@ TEST(ModelSigmaLSampling, BadValuesNameTheKey) {
   fails_with("\"pairs\": 100", "\"pairs\": 1.5", "sigma_l_sampling.pairs");
   fails_with("\"seed\": 1", "\"seed\": -1", "sigma_l_sampling.seed");
   fails_with("\"confidence\": 0.95", "\"confidence\": 1.5", "sigma_l_sampling.confidence");
-  fails_with("\"interval_mm\": [", "\"interval_mm\": [1, ", "sigma_l_sampling.interval_mm");
+  fails_with("\"interval_m\": [", "\"interval_m\": [1, ", "sigma_l_sampling.interval_m");
 }
 
 }  // namespace

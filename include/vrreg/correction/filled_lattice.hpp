@@ -34,6 +34,13 @@ struct FilledLattice {
                                          const ConstPoints3Ref& corrections_sensor_m,
                                          double tolerance_m);
 
+/// fill_lattice, with the reason in `why` and nullopt instead of an exception when the fiducials
+/// hold no usable lattice (fewer than 8, not evenly spaced, too sparse); still throws on
+/// non-finite input or a bad tolerance.
+[[nodiscard]] std::optional<FilledLattice> try_fill_lattice(
+    const ConstPoints3Ref& fiducials_robot_m, const ConstPoints3Ref& corrections_sensor_m,
+    double tolerance_m, std::string& why);
+
 /// Trilinear interpolation (Eq. 7) of the node corrections in the cell holding point_robot_m
 /// [m]; nullopt beyond tolerance_m outside the lattice or when a corner of the cell is empty.
 [[nodiscard]] std::optional<Eigen::Vector3d> lattice_correction(

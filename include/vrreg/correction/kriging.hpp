@@ -12,6 +12,7 @@
 
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/field_prediction.hpp"
+#include "vrreg/correction/method_state.hpp"
 
 namespace vrreg {
 
@@ -88,6 +89,15 @@ class KrigingModel {
       const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_m,
       const std::array<KrigingHyperparameters, 3>& hyperparameters,
       const KrigingOptions& options = {});
+
+  /// The model saved by save() for the same positions and values, conditioned again with its
+  /// saved hyperparameters and sd factors (no fit, no leave-one-out): the same predictions, bit
+  /// for bit. Throws InputError when the state is incomplete or out of range.
+  static KrigingModel restore(const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_m,
+                              const MethodState& state);
+  /// Writes the options, hyperparameters and sd factors into `state` (keys "trend_degree",
+  /// "x.length_m", ...): what restore() needs besides the data.
+  void save(MethodState& state) const;
 
   ~KrigingModel();
   KrigingModel(KrigingModel&&) noexcept;

@@ -8,6 +8,7 @@
 
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/field_prediction.hpp"
+#include "vrreg/correction/method_state.hpp"
 
 namespace vrreg {
 
@@ -34,6 +35,14 @@ class RbfModel {
   /// positions, positions that do not determine the polynomial, or bad options.
   static RbfModel fit(const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_m,
                       const RbfOptions& options = {});
+  /// The model save() wrote, on the same positions and values, without fitting: its weights and
+  /// smoothing as saved, so the same predictions bit for bit. Throws InputError when the state
+  /// does not fit the data.
+  static RbfModel restore(const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_m,
+                          const MethodState& state);
+  /// Writes options, frame, smoothing, LOO RMS and (global models) weights into `state`.
+  void save(MethodState& state) const;
+
   ~RbfModel();
   RbfModel(RbfModel&&) noexcept;
   RbfModel& operator=(RbfModel&&) noexcept;

@@ -61,6 +61,25 @@ struct JointErrorModelOptions {
   void validate() const;
 };
 
+/// Everything a fitted joint-space error model is, besides its nominal chain: what
+/// JointErrorModel::restore needs to predict exactly as the fitted model did.
+struct JointErrorModelParameters {
+  std::vector<int> joint_degrees;                ///< Legendre degree per joint
+  std::vector<JointPeriodicTerm> periodic_terms;
+  bool dh_deltas = true;
+  bool marker_offset = true;
+  int trend_degree = 2;
+  Eigen::VectorXd q_lo_rad;  ///< each joint's fitted range [rad]
+  Eigen::VectorXd q_hi_rad;
+  Eigen::Vector3d trend_centre_m = Eigen::Vector3d::Zero();
+  double trend_scale_m = 1.0;
+  Eigen::Vector3d p_flange_marker_m = Eigen::Vector3d::Zero();  ///< the marker on the flange [m]
+  bool linear = true;  ///< first-order model (no accepted Gauss-Newton step)
+  Eigen::VectorXd x;   ///< the parameters, unscaled (layout: src/kinematics/joint_error_design.hpp)
+  int rank = 0;
+  double selection_cv_rms_m = 0.0;  ///< NaN when the degrees were given
+};
+
 /// A fitted joint-space error model. Immutable; fit with JointErrorModel::fit.
 class JointErrorModel {
  public:
@@ -72,6 +91,14 @@ class JointErrorModel {
                              const ConstPoints3Ref& error_robot_m,
                              const JointErrorModelOptions& options = {},
                              const std::optional<Eigen::Vector3d>& p_flange_marker_m = {});
+
+  /// The model with these parameters on `nominal` (no fit): it predicts what the model they were
+  /// saved from predicted. Residuals are not kept (residuals_m() is empty). Throws InputError
+  /// when the parameters do not fit the chain (joint counts, parameter count, ranges).
+  static JointErrorModel restore(const SerialChain& nominal,
+                                 const JointErrorModelParameters& parameters);
+  /// What restore() needs.
+  [[nodiscard]] JointErrorModelParameters saved() const;
 
   /// Predicted y_observed - y_nominal at commanded joints `q_rad` [m, robot frame]. Outside a
   /// joint's fitted range its angle-error function keeps its value at the nearer end (a

@@ -21,6 +21,13 @@ struct CorrectOptions {
   InterpolationChoice interpolation;  ///< over the model's stored interpolation
   /// The arm (to the marker) for the joint-space field model; default: the model's.
   std::optional<kinematics::SerialChain> robot;
+  /// Fit the corrector again even when the model's own answers (its fiducials unchanged: the
+  /// same numbers unless the code that fits has changed). Off: the model's corrector is used
+  /// whenever it was fitted for the interpolation asked.
+  bool refit = false;
+  /// Kriging and RBF: correct with the model itself rather than its table (within 1/20 of the noise,
+  /// measured when fitted; CorrectorOptions::tabulate). Slower: kriging's sd costs O(J^2) a point.
+  bool exact = false;
 };
 
 /// The corrected points, in the order given.

@@ -11,6 +11,7 @@
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
 #include "vrreg/metrics/improvement.hpp"
+#include "vrreg/metrics/uncertainty_calibration.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
 #include "vrreg/pipeline/field_model.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
@@ -31,6 +32,13 @@ struct EvaluateOptions {
   std::optional<kinematics::JointNorm> joint_norm;
   /// The arm (to the marker) for the joint-space field model; default: the model's.
   std::optional<kinematics::SerialChain> robot;
+  /// Fit the corrector again even when the model's own answers (its fiducials unchanged: the
+  /// same numbers unless the code that fits has changed). Off: the model's corrector is used
+  /// whenever it was fitted for the interpolation asked.
+  bool refit = false;
+  /// Kriging and RBF: correct with the model itself rather than its table (within 1/20 of the noise,
+  /// measured when fitted; CorrectorOptions::tabulate). Slower: kriging's sd costs O(J^2) a point.
+  bool exact = false;
 };
 
 /// The evaluated targets, in the order given.

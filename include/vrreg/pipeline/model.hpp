@@ -9,6 +9,7 @@
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/correction/corrector.hpp"
 #include "vrreg/correction/interpolation.hpp"
 #include "vrreg/metrics/rigid_body_sampled.hpp"
 #include "vrreg/pipeline/marker_offset_model.hpp"
@@ -18,7 +19,7 @@ namespace vrreg {
 
 /// Everything needed to correct new targets: the registration and the fiducial corrections.
 struct RegistrationModel {
-  static constexpr int kFormatVersion = 1;
+  static constexpr int kFormatVersion = 2;
   SimilarityTransform T_robot_sensor;     ///< Y ~ R X + tau (Eq. 2); scale 1 unless estimated
   std::vector<Location> fiducials;   ///< nominal robot and averaged sensor positions, labels, joints
   Points3 corrections_sensor_m;      ///< epsilon_j (Eq. 6), one column per fiducial, sensor frame
@@ -37,11 +38,19 @@ struct RegistrationModel {
   std::optional<MarkerOffsetModel> marker_offset;
   /// The arm the fiducials' joints belong to, up to the marker (the joint-space field model).
   std::optional<kinematics::SerialChain> robot;
+  /// The corrector fitted on these fiducials for `interpolation` (and Procedure 2): evaluate and
+  /// correct use it without fitting again; empty when none was fitted (the default linear
+  /// interpolation could not be used on these fiducials, or the model was built by hand).
+  std::optional<Corrector> corrector;
 
   /// What RRBC interpolates (Eq. 6-8): the transform, fiducial positions, corrections, order.
   [[nodiscard]] CorrectionField correction_field() const;
   /// Throws InputError when the parts disagree (counts, non-finite values, no fiducials).
   void validate() const;
 };
+
+/// The corrector `saved` describes, restored on the model's fiducials without fitting (what io
+/// does when it reads a model file). Throws InputError when the state does not fit the model.
+Corrector restore_corrector(const RegistrationModel& model, const SavedCorrector& saved);
 
 }  // namespace vrreg

@@ -1,6 +1,6 @@
-// Field models through the front door (docs/field-models.md): the cross-validation that `auto`
-// uses is exact where the answer is known (affine fields, pure noise), chooses the lowest error
-// on the common fiducials, and the predicted uncertainty it gives is calibrated (Monte Carlo).
+// The field models' cross-validation and the corrector's predicted sd (docs/field-models.md):
+// exact where the answer is known (affine fields, pure noise), `auto` chooses the lowest error on
+// the common fiducials, and the predicted uncertainty is calibrated (Monte Carlo).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -10,17 +10,15 @@
 #include <numbers>
 #include <numeric>
 
-#include "pipeline/cross_validation.hpp"
-#include "pipeline/field_correction.hpp"
-#include "pipeline/field_models.hpp"
-#include "vrreg/vrreg.hpp"
+#include "vrreg/correction/corrector.hpp"
+#include "vrreg/correction/cross_validation.hpp"
 #include "vrreg_test.hpp"
 
 namespace vrreg {
 namespace {
 
 using ::testing::HasSubstr;
-using pipeline_detail::FieldData;
+using FieldData = CorrectorData;
 
 /// Field data whose corrections are `field(Y)` plus isotropic noise of `sigma_m` per axis.
 template <class Field>
@@ -34,10 +32,24 @@ FieldData field_data_of(const Points3& robot_m, Field field, double sigma_m, Ran
   return d;
 }
 
+/// Every fiducial its own fold unit.
+std::vector<Eigen::Index> singletons(Eigen::Index n) {
+  std::vector<Eigen::Index> out(static_cast<std::size_t>(n));
+  std::iota(out.begin(), out.end(), Eigen::Index{0});
+  return out;
+}
+
+/// A corrector of `method` on `d`.
+Corrector fit(InterpolationMethod method, const FieldData& d) {
+  CorrectorOptions options;
+  options.interpolation.method = method;
+  return Corrector::fit(d, options);
+}
+
 TEST(CrossValidation, FoldsAreBalancedDeterministicAndShuffled) {
-  const std::vector<int> a = pipeline_detail::assign_folds(103, 5, 1);
-  EXPECT_EQ(a, pipeline_detail::assign_folds(103, 5, 1));
-  EXPECT_NE(a, pipeline_detail::assign_folds(103, 5, 2));
+  const std::vector<int> a = assign_folds(singletons(103), 5, 1);
+  EXPECT_EQ(a, assign_folds(singletons(103), 5, 1));
+  EXPECT_NE(a, assign_folds(singletons(103), 5, 2));
   for (int f = 0; f < 5; ++f) {
     const auto n = std::count(a.begin(), a.end(), f);
     EXPECT_TRUE(n == 20 || n == 21) << n;
@@ -56,8 +68,8 @@ TEST(CrossValidation, AffineFieldGivesZeroErrorAndUnavailableMethodsSayWhy) {
   const FieldData d =
       field_data_of(testing::cube_grid_m(6, 0.025), [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(a * p); },
                     0.0, rng);
-  const CrossValidation cv = pipeline_detail::choose_by_cross_validation(d, 5, 1);
-  ASSERT_EQ(cv.rows.size(), pipeline_detail::auto_candidates().size());
+  const CrossValidation cv = choose_by_cross_validation(d, MethodSettings{}, 5, 1);
+  ASSERT_EQ(cv.rows.size(), auto_candidates().size());
   for (const CrossValidationRow& row : cv.rows) {
     if (row.method == InterpolationMethod::kScattered ||
         row.method == InterpolationMethod::kTrilinear) {
@@ -87,15 +99,15 @@ TEST(CrossValidation, PureNoisePredictedSdIsCalibratedOnNewPoints) {
   const int trials = testing::sanitized() ? 3 : 12;
   for (int trial = 0; trial < trials; ++trial) {
     FieldData d = field_data_of(nodes, zero, sigma_m, rng);
-    const pipeline_detail::FittedField fit =
-        pipeline_detail::fit_field(InterpolationMethod::kTrilinear, d);
-    EXPECT_GT(fit.cv_rms_m, std::sqrt(3.0) * sigma_m);
-    EXPECT_LT(fit.cv_rms_m, 2.0 * std::sqrt(3.0) * sigma_m);
+    const Corrector corrector = fit(InterpolationMethod::kTrilinear, d);
+    EXPECT_EQ(corrector.sd_source(), SdSource::kLocalCv);
+    const double cv_rms_m = corrector.save().cv_rms_m;
+    EXPECT_GT(cv_rms_m, std::sqrt(3.0) * sigma_m);
+    EXPECT_LT(cv_rms_m, 2.0 * std::sqrt(3.0) * sigma_m);
     // New targets at the cube centres, each read with noise of its own.
     Points3 sensor = centres;
     for (Eigen::Index t = 0; t < sensor.cols(); ++t) sensor.col(t) += rng.normal3(sigma_m);
-    const TargetCorrection c =
-        pipeline_detail::correct_with_field(fit, d, sensor, Eigen::MatrixXd());
+    const TargetCorrection c = corrector.correct(CorrectionQuery(sensor));
     for (Eigen::Index t = 0; t < sensor.cols(); ++t) {
       ASSERT_TRUE(std::isfinite(c.predicted_sd_m(t)));
       const double tre = (c.corrected_robot_m.col(t) - centres.col(t)).norm();
@@ -132,13 +144,11 @@ TEST(CrossValidation, PredictedSdFollowsWhereTheHeldOutErrorsAre) {
     d.corrections_sensor_m.resize(3, nodes.cols());
     for (Eigen::Index j = 0; j < nodes.cols(); ++j)
       d.corrections_sensor_m.col(j) = rng.normal3(noise_at(nodes.col(j)));
-    const pipeline_detail::FittedField fit =
-        pipeline_detail::fit_field(InterpolationMethod::kTrilinear, d);
+    const Corrector corrector = fit(InterpolationMethod::kTrilinear, d);
     Points3 sensor = centres;
     for (Eigen::Index t = 0; t < sensor.cols(); ++t)
       sensor.col(t) += rng.normal3(noise_at(centres.col(t)));
-    const TargetCorrection c =
-        pipeline_detail::correct_with_field(fit, d, sensor, Eigen::MatrixXd());
+    const TargetCorrection c = corrector.correct(CorrectionQuery(sensor));
     for (Eigen::Index t = 0; t < sensor.cols(); ++t) {
       // Targets a cell away from the middle plane: their 16 nearest fiducials share their noise.
       const double dx = centres(0, t) - mid_x;
@@ -169,7 +179,7 @@ TEST(CrossValidation, AutoChoosesTheLowestCommonRms) {
                                1e-3 * p.x() * p.z());
       },
       2e-5, rng);
-  const CrossValidation cv = pipeline_detail::choose_by_cross_validation(d, 5, 7);
+  const CrossValidation cv = choose_by_cross_validation(d, MethodSettings{}, 5, 7);
   double best = std::numeric_limits<double>::infinity();
   InterpolationMethod best_method = InterpolationMethod::kAuto;
   for (const CrossValidationRow& row : cv.rows) {
@@ -187,7 +197,7 @@ TEST(CrossValidation, TooFewFiducialsIsAnError) {
   const FieldData d = field_data_of(testing::cube_grid_m(2, 0.025), [](const Eigen::Vector3d&) {
     return Eigen::Vector3d::Zero().eval();
   }, 1e-5, rng);
-  EXPECT_THAT([&] { (void)pipeline_detail::choose_by_cross_validation(d, 5, 1); },
+  EXPECT_THAT([&] { (void)choose_by_cross_validation(d, MethodSettings{}, 5, 1); },
               ::testing::ThrowsMessage<InputError>(HasSubstr("needs at least 10 fiducials")));
 }
 
@@ -199,7 +209,7 @@ namespace {
 
 // An arm's error along the azimuth of its base joint (e.g. a wavy joint-1 error: a tangential
 // displacement r * dq1(phi)) is rough along the azimuth and constant along the radius and the
-// height. Kriged in the base cylinder (pipeline/base_cylinder.hpp) its prediction error at new
+// height. Kriged in the base cylinder (correction/base_cylinder.hpp) its prediction error at new
 // points is near the noise; the same fiducials kriged in Cartesian axes left 10x more (measured
 // while the Cartesian frame was still selectable).
 TEST(KrigingField, FollowsTheBaseAxis) {
@@ -219,18 +229,17 @@ TEST(KrigingField, FollowsTheBaseAxis) {
                                            static_cast<double>(i / 81));
   const double sigma_m = 2e-5;
   const FieldData d = field_data_of(nodes, tangential, sigma_m, rng);
-  const auto model = pipeline_detail::fit_field_model(InterpolationMethod::kKriging, d);
-  EXPECT_THAT(model->describe(), HasSubstr("cylindrical"));
-  pipeline_detail::FieldQuery query;
-  query.registered_robot_m.resize(3, 200);
+  const Corrector model = fit(InterpolationMethod::kKriging, d);
+  EXPECT_THAT(model.describe(), HasSubstr("cylindrical"));
+  Points3 query(3, 200);
   for (Eigen::Index q = 0; q < 200; ++q)
-    query.registered_robot_m.col(q) =
+    query.col(q) =
         Eigen::Vector3d(rng.uniform(0.37, 0.53), rng.uniform(-0.08, 0.08), rng.uniform(0.2, 0.3));
-  const pipeline_detail::FieldPredictions p = model->predict(query);
+  const TargetCorrection p = model.correct(CorrectionQuery(query));
   double sum_sq_m2 = 0.0;
   double field_sq_m2 = 0.0;
   for (Eigen::Index q = 0; q < 200; ++q) {
-    const Eigen::Vector3d truth = tangential(query.registered_robot_m.col(q));
+    const Eigen::Vector3d truth = tangential(query.col(q));
     sum_sq_m2 += (p.corrections_sensor_m.col(q) - truth).squaredNorm();
     field_sq_m2 += truth.squaredNorm();
   }
@@ -250,12 +259,13 @@ TEST(KrigingField, RefusesOnePositionInTwoConfigurations) {
   FieldData d = field_data_of(
       twice, [](const Eigen::Vector3d&) { return Eigen::Vector3d::Zero().eval(); }, 1e-5, rng);
   d.joints_rad = Eigen::MatrixXd::Zero(6, twice.cols());
-  EXPECT_EQ(pipeline_detail::field_model_unavailable(InterpolationMethod::kKriging, d), "");
+  const CorrectionMethod& kriging = correction_method(InterpolationMethod::kKriging);
+  EXPECT_EQ(kriging.unavailable(d, MethodSettings{}), "");
   d.joints_rad.rightCols(grid.cols()).row(2).setConstant(1.0);  // elbow down
-  EXPECT_THAT(pipeline_detail::field_model_unavailable(InterpolationMethod::kKriging, d),
+  EXPECT_THAT(kriging.unavailable(d, MethodSettings{}),
               HasSubstr("fiducials 0 and 27 share a nominal robot position in different arm "
                         "configurations"));
-  EXPECT_THAT([&] { (void)pipeline_detail::fit_field_model(InterpolationMethod::kKriging, d); },
+  EXPECT_THAT([&] { (void)fit(InterpolationMethod::kKriging, d); },
               ::testing::ThrowsMessage<InputError>(HasSubstr("different arm configurations")));
 }
 
@@ -268,8 +278,7 @@ TEST(KrigingField, TrendDegreeFollowsTheFiducialCount) {
   for (const auto& [n, degree] : {std::pair{3, "trend degree 0"}, std::pair{4, "trend degree 1"},
                                   std::pair{5, "trend degree 2"}}) {
     const FieldData d = field_data_of(testing::cube_grid_m(n, 0.05), smooth, 1e-5, rng);
-    EXPECT_THAT(pipeline_detail::fit_field_model(InterpolationMethod::kKriging, d)->describe(),
-                HasSubstr(degree));
+    EXPECT_THAT(fit(InterpolationMethod::kKriging, d).describe(), HasSubstr(degree));
   }
 }
 

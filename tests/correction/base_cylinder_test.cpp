@@ -1,7 +1,7 @@
-// The base-axis cylindrical coordinates kriging works in (pipeline/base_cylinder.hpp): exact on
+// The base-axis cylindrical coordinates kriging works in (correction/base_cylinder.hpp): exact on
 // points whose cylindrical coordinates are known, lossless for vectors, and refused where the
 // azimuth is ill-defined or would be cut.
-#include "pipeline/base_cylinder.hpp"
+#include "correction/base_cylinder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 namespace vrreg {
 namespace {
 
-using pipeline_detail::BaseCylinder;
+using detail::BaseCylinder;
 
 Eigen::Vector3d at(double radius_m, double azimuth_rad, double z_m) {
   return {radius_m * std::cos(azimuth_rad), radius_m * std::sin(azimuth_rad), z_m};

@@ -5,7 +5,7 @@
 #include <vector>
 #include <numbers>
 
-namespace vrreg::pipeline_detail {
+namespace vrreg::detail {
 namespace {
 
 constexpr double kMinRadiusFraction = 0.2;
@@ -79,4 +79,4 @@ Points3 BaseCylinder::from_local(const ConstPoints3Ref& robot_m,
   return out;
 }
 
-}  // namespace vrreg::pipeline_detail
+}  // namespace vrreg::detail

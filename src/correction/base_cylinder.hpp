@@ -1,5 +1,5 @@
 #pragma once
-// Internal to pipeline: cylindrical coordinates about the robot's base axis (the robot frame's
+// Internal to correction: cylindrical coordinates about the robot's base axis (the robot frame's
 // z axis, joint 1 of the UR5 and the LWR 4+), in which a serial arm's position error is smooth
 // and closer to stationary than in Cartesian axes: the base joint's and the shoulder's errors
 // vary along the azimuth and the radius, not along x and y (docs/field-models.md).
@@ -7,7 +7,7 @@
 
 #include "vrreg/core/types.hpp"
 
-namespace vrreg::pipeline_detail {
+namespace vrreg::detail {
 
 class BaseCylinder {
  public:
@@ -34,4 +34,4 @@ class BaseCylinder {
   double reference_azimuth_rad_;
 };
 
-}  // namespace vrreg::pipeline_detail
+}  // namespace vrreg::detail

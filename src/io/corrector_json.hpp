@@ -1,0 +1,22 @@
+#pragma once
+// Internal to io: the "corrector" member of a model file (version 2): the fitted correction
+// method's saved state, its settings, its cross-validation table and where its sd comes from.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "json_fields.hpp"
+#include "vrreg/correction/corrector.hpp"
+
+namespace vrreg::io::detail {
+
+/// {"method", "requested": {method, cube_m, match_tolerance_m}, "nearest_configuration",
+/// "cv_folds", "cv_seed", "sd_source", "cv_rms_m", "cv_squared_error_m2" (null where not
+/// predicted), "cross_validation" (auto: the table without times), "state": {key: number, text
+/// or {"shape": [rows, cols], "values": column-major}}}.
+nlohmann::ordered_json corrector_json(const SavedCorrector& saved);
+
+/// Reads what corrector_json writes at key path `path`; errors name the file and the key.
+SavedCorrector read_corrector(const nlohmann::json& item, const std::string& path,
+                              const JsonFields& f);
+
+}  // namespace vrreg::io::detail
