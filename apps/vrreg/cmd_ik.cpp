@@ -109,6 +109,10 @@ void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
   }
 }
 
+nlohmann::json ik_json(const kinematics::SerialChain& chain, const Eigen::Isometry3d& t,
+                       const IkResult& r, const std::optional<double>& psi_rad,
+                       const std::optional<kinematics::PsiIntervalsResult>& psi_ranges);
+
 void run_ik(const IkArgs& args) {
   const kinematics::SerialChain chain = robot_from_args(args.robot, args.tool_mm);
   const Eigen::Isometry3d t = target_pose(args);
@@ -146,8 +150,19 @@ void run_ik(const IkArgs& args) {
 
   if (!args.json) {
     print_human(args, chain, t, r, psi_rad, psi_ranges);
-    return;
+  } else {
+    print_json(ik_json(chain, t, r, psi_rad, psi_ranges));
   }
+  if (!r.ok()) {
+    std::fflush(stdout);
+    throw NoSolution("ik: no solution (" + std::string(kinematics::to_string(r.status)) +
+                     "): " + r.message);
+  }
+}
+
+nlohmann::json ik_json(const kinematics::SerialChain& chain, const Eigen::Isometry3d& t,
+                       const IkResult& r, const std::optional<double>& psi_rad,
+                       const std::optional<kinematics::PsiIntervalsResult>& psi_ranges) {
   nlohmann::json j;
   j["robot"] = chain.name();
   j["frame"] = pose_frame_description(chain);
@@ -180,7 +195,7 @@ void run_ik(const IkArgs& args) {
     }
     j["feasible_psi_deg"] = ranges;
   }
-  print_json(j);
+  return j;
 }
 
 void add_ik_command(CLI::App& app) {
