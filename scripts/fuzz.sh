@@ -16,7 +16,7 @@ if ! [[ $seconds =~ ^[0-9]+$ ]] || ((seconds < 1)); then
   echo "fuzz.sh: SECONDS_PER_HARNESS must be a whole number >= 1, got '$seconds'" >&2
   exit 2
 fi
-all=(measurement_csv model_json robot_file error_model plan_csv parts_csv)
+all=(measurement_csv model_json robot_file error_model plan_csv parts_csv urdf)
 harnesses=("$@")
 ((${#harnesses[@]})) || harnesses=("${all[@]}")
 if ! command -v clang++ >/dev/null 2>&1; then

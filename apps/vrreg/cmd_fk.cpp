@@ -97,7 +97,8 @@ void add_fk_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "fk", "forward kinematics: the flange (or TCP) pose of a robot at given joint values");
   cmd->add_option("robot", args->robot,
-                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (JSON/YAML DH table)")
+                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (URDF, or JSON/YAML: a DH table "
+                  "or a URDF with its base and tip link)")
       ->required();
   cmd->add_option("joints", args->joints, "joint values Q1 ... QN (rad, or deg with --deg)")
       ->required();

@@ -1,5 +1,6 @@
-// vrreg ik: every analytic inverse-kinematics solution of a flange (or TCP) pose, each labelled
-// with its configuration; for the LWR 4+ at an arm angle psi, with the feasible psi ranges.
+// vrreg ik: every inverse-kinematics solution of a flange (or TCP) pose, each labelled with its
+// configuration (closed form for UR and LWR 4+ chains, at an arm angle psi with the feasible psi
+// ranges for the LWR; numerical for any other chain). No solution: the answer, then exit 3.
 #include <cstdio>
 #include <memory>
 
@@ -203,9 +204,11 @@ void add_ik_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "ik",
       "inverse kinematics: every joint solution of a flange (or TCP) pose, labelled by "
-      "arm configuration (UR: up to 8; LWR 4+: up to 8 per arm angle psi)");
+      "arm configuration (UR: up to 8; LWR 4+: up to 8 per arm angle psi; any other chain: "
+      "numerically, one per configuration class found); exit status 3 when there is none");
   cmd->add_option("robot", args->robot,
-                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (JSON/YAML DH table)")
+                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (URDF, or JSON/YAML: a DH table "
+                  "or a URDF with its base and tip link)")
       ->required();
   cmd->add_option("--xyz-mm", args->xyz_mm, "position X Y Z in mm")->expected(3)->required();
   cmd->add_option("--rpy-deg", args->rpy_deg,

@@ -1,5 +1,5 @@
-// Joint-by-joint chains (URDF's form) to DH: with every joint at zero, the axis of joint i is a line
-// (point, direction) in the base frame; DH frame i-1 has z on the axis of joint i, frame i's x
+// Joint-by-joint chains (URDF's form) to DH: with every joint at zero, the axis of joint i is a
+// line (point, direction) in the base frame; DH frame i-1 has z on the axis of joint i, frame i's x
 // along the common normal from axis i to axis i+1. What the DH table cannot hold (where frame 0
 // sits in the base, where the tip sits on the last frame) goes to the base and tool transforms.
 #include "vrreg/kinematics/joint_chain.hpp"
@@ -91,9 +91,9 @@ DhRow next_row(const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::
 Eigen::Isometry3d joints_forward_kinematics(const std::vector<ChainJoint>& joints,
                                             const Eigen::Isometry3d& T_last_tip,
                                             const JointRef& q) {
-  VRREG_THROW_UNLESS(q.size() == static_cast<Eigen::Index>(joints.size()),
-                     "joint chain FK: " << joints.size() << " joints, got " << q.size()
-                                        << " values");
+  VRREG_THROW_UNLESS(
+      q.size() == static_cast<Eigen::Index>(joints.size()),
+      "joint chain FK: " << joints.size() << " joints, got " << q.size() << " values");
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   for (std::size_t i = 0; i < joints.size(); ++i) {
     t = t * joints[i].T_parent_joint * joint_motion(joints[i], q(static_cast<Eigen::Index>(i)));
@@ -104,9 +104,9 @@ Eigen::Isometry3d joints_forward_kinematics(const std::vector<ChainJoint>& joint
 SerialChain chain_from_joints(std::string name, const std::vector<ChainJoint>& joints,
                               const Eigen::Isometry3d& T_last_tip) {
   const std::size_t n = joints.size();
-  VRREG_THROW_UNLESS(n >= 1 && n <= static_cast<std::size_t>(kMaxJoints),
-                     "robot '" << name << "': a chain needs 1 to " << kMaxJoints
-                               << " moving joints, got " << n);
+  VRREG_THROW_UNLESS(
+      n >= 1 && n <= static_cast<std::size_t>(kMaxJoints),
+      "robot '" << name << "': a chain needs 1 to " << kMaxJoints << " moving joints, got " << n);
   // Every joint's axis line at q = 0, in the base frame.
   std::vector<Line> axes;
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();

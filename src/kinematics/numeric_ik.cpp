@@ -24,7 +24,7 @@ namespace {
 
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
-constexpr double kAngleTolerance = 1e-9;  // rad, for the DH structure of branch joints
+constexpr double kAngleTolerance = 1e-9;   // rad, for the DH structure of branch joints
 constexpr double kLengthTolerance = 1e-9;  // m
 // Stall test of one start: every 25 steps, give up when |e|^2 is still above (1 mm)^2 and fell
 // by less than 10 % since the last check. Closer in, slow progress (a stretched arm, a joint
@@ -141,6 +141,8 @@ void NumericIkOptions::validate() const {
   VRREG_THROW_UNLESS(max_starts >= 1 && max_starts <= 100000,
                      "numeric IK: max_starts must be in 1..100000, got " << max_starts);
   VRREG_THROW_UNLESS(patience >= 1, "numeric IK: patience must be >= 1, got " << patience);
+  VRREG_THROW_UNLESS(max_solutions >= 1,
+                     "numeric IK: max_solutions must be >= 1, got " << max_solutions);
   VRREG_THROW_UNLESS(max_iterations >= 1 && max_iterations <= 100000,
                      "numeric IK: max_iterations must be in 1..100000, got " << max_iterations);
   VRREG_THROW_UNLESS(std::isfinite(position_tolerance_m) && position_tolerance_m > 0.0,
@@ -189,7 +191,8 @@ IkResult numeric_inverse_kinematics(const SerialChain& chain, const Eigen::Isome
   int stale = 0;
   double closest_m = std::numeric_limits<double>::infinity(), closest_rad = 0.0;
   int start = 0;
-  for (; start < options.max_starts + (q_start_rad ? 1 : 0) && stale < options.patience;
+  for (; start < options.max_starts + (q_start_rad ? 1 : 0) && stale < options.patience &&
+         static_cast<int>(found.size()) < options.max_solutions;
        ++start) {
     const JointVector q0 =
         start == 0 && q_start_rad ? *q_start_rad : random_start(chain, limits, rng);

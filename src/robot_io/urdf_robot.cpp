@@ -4,13 +4,13 @@
 #include "vrreg/robot_io/urdf_robot.hpp"
 
 #include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
 
 #include <Eigen/Geometry>
 #include <exception>
 #include <map>
 #include <mutex>
 #include <set>
-#include <urdf_parser/urdf_parser.h>
 #include <vector>
 
 #include "vrreg/core/check.hpp"
@@ -110,8 +110,8 @@ class ChainBuilder {
     if (tied.size() != 1) {
       std::string names;
       for (const std::string& n : tied) names += (names.empty() ? "" : ", ") + n;
-      fail("several leaf links end " + std::to_string(best) +
-           " moving joints from the root (" + names + "): name the tip link");
+      fail("several leaf links end " + std::to_string(best) + " moving joints from the root (" +
+           names + "): name the tip link");
     }
     return model_.getLink(tied.front());
   }
@@ -219,8 +219,7 @@ kinematics::SerialChain parse_urdf_robot(const std::string& xml, const std::stri
   return ChainBuilder(*model, source).build(options);
 }
 
-kinematics::SerialChain read_urdf_robot(const std::string& path,
-                                        const UrdfChainOptions& options) {
+kinematics::SerialChain read_urdf_robot(const std::string& path, const UrdfChainOptions& options) {
   return parse_urdf_robot(read_input_file(path), path, options);
 }
 

@@ -60,7 +60,9 @@ void expect_round_trip(const std::string& robot, const std::string& pose_args,
   const nlohmann::json ik = run_json("ik " + robot + " " + pose_args);
   ASSERT_EQ(ik["status"], "ok") << ik.dump(2);
   // expected_solutions 0: any number but none.
-  if (expected_solutions > 0) ASSERT_EQ(ik["solutions"].size(), expected_solutions) << ik.dump(2);
+  if (expected_solutions > 0) {
+    ASSERT_EQ(ik["solutions"].size(), expected_solutions) << ik.dump(2);
+  }
   ASSERT_FALSE(ik["solutions"].empty()) << ik.dump(2);
   const nlohmann::json& target = ik["target"];
   for (const auto& solution : ik["solutions"]) {

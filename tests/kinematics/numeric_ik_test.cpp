@@ -32,14 +32,10 @@ SerialChain offset_ur5() {
 // A 7R arm with offsets (no spherical wrist) on a prismatic column: 8 joints.
 SerialChain column_arm() {
   std::vector<DhRow> rows = {
-      {0.0, 0.0, 0.3, 0.0, JointType::kPrismatic},
-      {0.0, -std::numbers::pi / 2, 0.333, 0.0},
-      {0.0, std::numbers::pi / 2, 0.0, 0.0},
-      {0.0825, std::numbers::pi / 2, 0.316, 0.0},
-      {-0.0825, -std::numbers::pi / 2, 0.0, 0.0},
-      {0.0, std::numbers::pi / 2, 0.384, 0.0},
-      {0.088, std::numbers::pi / 2, 0.0, 0.0},
-      {0.0, 0.0, 0.107, 0.0},
+      {0.0, 0.0, 0.3, 0.0, JointType::kPrismatic}, {0.0, -std::numbers::pi / 2, 0.333, 0.0},
+      {0.0, std::numbers::pi / 2, 0.0, 0.0},       {0.0825, std::numbers::pi / 2, 0.316, 0.0},
+      {-0.0825, -std::numbers::pi / 2, 0.0, 0.0},  {0.0, std::numbers::pi / 2, 0.384, 0.0},
+      {0.088, std::numbers::pi / 2, 0.0, 0.0},     {0.0, 0.0, 0.107, 0.0},
   };
   std::vector<JointLimits> limits(8, {-2.8, 2.8});
   limits[0] = {0.0, 1.2};

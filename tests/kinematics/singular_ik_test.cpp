@@ -150,8 +150,8 @@ void check_pose(const SerialChain& chain, const JointVector& q, Outcome& out) {
     const bool contains = nearest <= kContainsTolerance;
     if (own_free_angle) {
       EXPECT_TRUE(contains) << std::setprecision(17) << chain.name() << ": q = " << q.transpose()
-                            << " not among the " << r.solutions.size()
-                            << " solutions; nearest at " << nearest << " rad";
+                            << " not among the " << r.solutions.size() << " solutions; nearest at "
+                            << nearest << " rad";
       if (contains) ++out.contained;
     }
   }

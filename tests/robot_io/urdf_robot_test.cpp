@@ -4,13 +4,13 @@
 #include "vrreg/robot_io/urdf_robot.hpp"
 
 #include <gtest/gtest.h>
-#include <kdl/chain.hpp>
-#include <kdl/chainfksolverpos_recursive.hpp>
-#include <kdl/chainjnttojacsolver.hpp>
 #include <urdf_parser/urdf_parser.h>
 
 #include <cmath>
 #include <filesystem>
+#include <kdl/chain.hpp>
+#include <kdl/chainfksolverpos_recursive.hpp>
+#include <kdl/chainjnttojacsolver.hpp>
 #include <numbers>
 #include <string>
 
@@ -30,6 +30,9 @@ namespace {
 
 using kinematics::JointVector;
 using kinematics::SerialChain;
+using vrreg::testing::read_text;
+using vrreg::testing::TempDir;
+using vrreg::testing::throws_file_error;
 
 std::string urdf_path(const std::string& name) {
   return std::string(VRREG_TEST_DATA_DIR) + "/urdf/" + name;
@@ -64,7 +67,8 @@ std::vector<urdf::JointConstSharedPtr> tree_path(const urdf::ModelInterface& mod
 }
 
 // Reference FK on urdfdom's tree: origin then motion, joint by joint.
-Eigen::Isometry3d tree_fk(const std::vector<urdf::JointConstSharedPtr>& path, const JointVector& q) {
+Eigen::Isometry3d tree_fk(const std::vector<urdf::JointConstSharedPtr>& path,
+                          const JointVector& q) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   int k = 0;
   for (const auto& j : path) {
@@ -243,9 +247,10 @@ TEST(UrdfUr5, JointErrorModelIsTheBuiltInUr5s) {
 TEST(UrdfRobot, RobotFileNamesAUrdfChain) {
   TempDir dir;
   std::filesystem::copy_file(urdf_path("ur5.urdf"), dir.file("ur5.urdf"));
-  const std::string file = dir.write(
-      "cell.yaml", "name: cell-ur5\nurdf: ur5.urdf\nbase_link: base\ntip_link: tool0\n"
-                   "family: ur\ntool: {xyz_mm: [0, 0, 45.5]}\n");
+  const std::string file =
+      dir.write("cell.yaml",
+                "name: cell-ur5\nurdf: ur5.urdf\nbase_link: base\ntip_link: tool0\n"
+                "family: ur\ntool: {xyz_mm: [0, 0, 45.5]}\n");
   const SerialChain chain = load_robot(file);
   EXPECT_EQ(chain.name(), "cell-ur5");
   EXPECT_EQ(chain.family(), kinematics::ChainFamily::kUr);
@@ -282,8 +287,9 @@ TEST(UrdfRobot, BadFilesAreOneLineErrorsNamingTheFile) {
       {"floating.urdf", head + joint("floating") + "</robot>", "floating or planar"},
       {"nolimit.urdf", head + joint("revolute") + "</robot>", "not a valid URDF"},
       {"fixed.urdf", head + joint("fixed") + "</robot>", "no moving joint"},
-      {"flat.urdf", head + joint("revolute", "<limit lower='1' upper='1' effort='1' velocity='1'/>") +
-                        "</robot>",
+      {"flat.urdf",
+       head + joint("revolute", "<limit lower='1' upper='1' effort='1' velocity='1'/>") +
+           "</robot>",
        "not below upper limit"},
       {"empty.urdf", "", "not a valid URDF"},
   };
@@ -293,10 +299,16 @@ TEST(UrdfRobot, BadFilesAreOneLineErrorsNamingTheFile) {
         << c.name;
   }
   const std::string good = urdf_path("ur5.urdf");
-  EXPECT_TRUE(throws_file_error([&] { (void)read_urdf_robot(good, {"", "hand"}); }, good, 0,
-                                "tip link 'hand' is not in the URDF"));
-  EXPECT_TRUE(throws_file_error([&] { (void)read_urdf_robot(good, {"tool0", "base"}); }, good, 0,
-                                "passes moving joint"));
+  EXPECT_TRUE(throws_file_error(
+      [&] {
+        (void)read_urdf_robot(good, {"", "hand"});
+      },
+      good, 0, "tip link 'hand' is not in the URDF"));
+  EXPECT_TRUE(throws_file_error(
+      [&] {
+        (void)read_urdf_robot(good, {"tool0", "base"});
+      },
+      good, 0, "passes moving joint"));
 }
 
 }  // namespace

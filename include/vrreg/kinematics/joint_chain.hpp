@@ -32,7 +32,6 @@ SerialChain chain_from_joints(std::string name, const std::vector<ChainJoint>& j
 
 /// FK of `joints` composed directly as above (a reference for chain_from_joints) [m].
 Eigen::Isometry3d joints_forward_kinematics(const std::vector<ChainJoint>& joints,
-                                            const Eigen::Isometry3d& T_last_tip,
-                                            const JointRef& q);
+                                            const Eigen::Isometry3d& T_last_tip, const JointRef& q);
 
 }  // namespace vrreg::kinematics

@@ -22,9 +22,10 @@ struct NumericIkOptions {
   int max_starts = 64;             ///< random starts at most (after `q_start`, if given)
   /// Stop once this many starts in a row converged to classes already found.
   int patience = 24;
+  int max_solutions = 64;     ///< stop once this many classes are found (1: the first solution)
   int max_iterations = 1000;  ///< damped steps per start (a joint limit or a stretched arm
                               ///< on the way can take several hundred)
-  std::uint64_t seed = 1;    ///< of the random starts: the same seed, the same result
+  std::uint64_t seed = 1;     ///< of the random starts: the same seed, the same result
   /// A start converged when |dp| is below this and the rotation error below the next; at a
   /// workspace boundary (a stretched arm) rounding keeps the error near 1e-13.
   double position_tolerance_m = 5e-13;
