@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "kdl_support.hpp"
 #include "vrreg/core/random.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/numeric_ik.hpp"
@@ -79,25 +80,9 @@ void BM_vrreg_numeric_ik(benchmark::State& state) {
   state.counters["solutions"] = solutions / kNumericPoses;
 }
 
-KDL::Chain kdl_chain(const SerialChain& chain) {
-  KDL::Chain kdl;
-  for (const auto& r : chain.rows()) {
-    kdl.addSegment(KDL::Segment(KDL::Joint(r.prismatic() ? KDL::Joint::TransZ : KDL::Joint::RotZ),
-                                KDL::Frame::DH(r.a_m, r.alpha_rad, r.d_m, r.theta_offset_rad)));
-  }
-  return kdl;
-}
-
 // The pose of the last DH frame: KDL's chain has no base or tool transform.
 Eigen::Isometry3d flange_target(const SerialChain& chain, const JointVector& q) {
   return vrreg::kinematics::flange_in_dh0(chain, q);
-}
-
-KDL::Frame kdl_frame(const Eigen::Isometry3d& t) {
-  const Eigen::Matrix3d& r = t.linear();
-  return KDL::Frame(KDL::Rotation(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0),
-                                  r(2, 1), r(2, 2)),
-                    KDL::Vector(t.translation().x(), t.translation().y(), t.translation().z()));
 }
 
 // range(0): chain; range(1): 1 = LMA, 0 = NR_JL. Seed: the middle of the limits (TRAC-IK's
@@ -105,7 +90,7 @@ KDL::Frame kdl_frame(const Eigen::Isometry3d& t) {
 void BM_kdl_numeric_ik(benchmark::State& state) {
   const SerialChain chain = numeric_chain(static_cast<int>(state.range(0)));
   const std::vector<Target> poses = targets(chain);
-  const KDL::Chain kdl = kdl_chain(chain);
+  const KDL::Chain kdl = vrreg::bench::kdl_chain(chain);
   const unsigned n = kdl.getNrOfJoints();
   KDL::JntArray q_min(n), q_max(n), q_init(n), q_out(n);
   for (unsigned i = 0; i < n; ++i) {
@@ -119,7 +104,7 @@ void BM_kdl_numeric_ik(benchmark::State& state) {
   KDL::ChainIkSolverPos_NR_JL nr_jl(kdl, q_min, q_max, fk, vel);
   const bool use_lma = state.range(1) != 0;
   const auto solve = [&](const Target& t) {
-    const KDL::Frame target = kdl_frame(flange_target(chain, t.q));
+    const KDL::Frame target = vrreg::bench::kdl_frame(flange_target(chain, t.q));
     return use_lma ? lma.CartToJnt(q_init, target, q_out) : nr_jl.CartToJnt(q_init, target, q_out);
   };
   std::size_t k = 0;
@@ -130,14 +115,14 @@ void BM_kdl_numeric_ik(benchmark::State& state) {
   double solved = 0;
   for (const Target& t : poses) {
     if (solve(t) < 0) continue;
-    const Eigen::Isometry3d reached = vrreg::kinematics::flange_in_dh0(chain, q_out.data);
+    const Eigen::Isometry3d reached_pose = vrreg::kinematics::flange_in_dh0(chain, q_out.data);
     const Eigen::Isometry3d wanted = flange_target(chain, t.q);
     const bool in_limits = chain.within_limits(q_out.data, 1e-9);
-    solved +=
-        in_limits && (reached.translation() - wanted.translation()).norm() < 1e-5 &&
-                vrreg::kinematics::rotation_angle_between(reached.linear(), wanted.linear()) < 1e-5
-            ? 1
-            : 0;
+    solved += in_limits && (reached_pose.translation() - wanted.translation()).norm() < 1e-5 &&
+                      vrreg::kinematics::rotation_angle_between(reached_pose.linear(),
+                                                                wanted.linear()) < 1e-5
+                  ? 1
+                  : 0;
   }
   state.counters["success_rate"] = solved / kNumericPoses;
   state.counters["solutions"] = solved / kNumericPoses;

@@ -83,8 +83,10 @@ void run_fk(const FkArgs& args) {
       std::printf("  singular          %s\n", kinematics::singularity_names(arm->singular).c_str());
     }
   }
+  // The pose to the picometre and 1e-12 deg, so that the command inverts it even where the IK is
+  // ill-conditioned: at a singular wrist, the last printed digit would move the free angle.
   std::printf("  back to joints:   vrreg ik %s --xyz-mm %s --rpy-deg %s", args.robot.c_str(),
-              xyz.c_str(), rpy.c_str());
+              xyz_mm_text(pose.translation(), 9).c_str(), rpy_deg_text(pose.linear(), 12).c_str());
   if (arm) std::printf(" --psi-deg %.6f", units::rad_to_deg(arm->psi_rad));
   if (!args.tool_mm.empty()) {
     std::printf(" --tool-mm %g %g %g", args.tool_mm[0], args.tool_mm[1], args.tool_mm[2]);

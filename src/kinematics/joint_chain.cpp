@@ -5,6 +5,7 @@
 #include "vrreg/kinematics/joint_chain.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 #include "vrreg/core/check.hpp"
@@ -42,6 +43,26 @@ Eigen::Isometry3d frame(const Eigen::Vector3d& origin, const Eigen::Vector3d& x,
   f.linear().col(2) = z;
   f.translation() = origin;
   return f;
+}
+
+// The conversion leaves rounding of ~1e-16 on what the joint list states exactly (a twist of
+// 90 deg, a link of 0.425 m): angles within 1e-12 rad of a multiple of 90 deg become that
+// multiple, lengths are rounded to the picometre (the nearest double to a decimal length), so
+// that a chain built like a built-in robot has its DH table to the bit.
+double snap_angle(double angle_rad) {
+  const double quarter = std::numbers::pi / 2;
+  const double k = std::round(angle_rad / quarter);
+  return std::abs(angle_rad - k * quarter) <= 1e-12 ? k * quarter + 0.0 : angle_rad;
+}
+
+double snap_length(double length_m) { return std::round(length_m * 1e12) / 1e12 + 0.0; }
+
+DhRow snapped(DhRow row) {
+  row.a_m = snap_length(row.a_m);
+  row.d_m = snap_length(row.d_m);
+  row.alpha_rad = snap_angle(row.alpha_rad);
+  row.theta_offset_rad = snap_angle(row.theta_offset_rad);
+  return row;
 }
 
 Eigen::Isometry3d joint_motion(const ChainJoint& joint, double q) {
@@ -140,7 +161,7 @@ SerialChain chain_from_joints(std::string name, const std::vector<ChainJoint>& j
       row.theta_offset_rad = angle_about(x, x_next, z);
     }
     row.type = joints[i].type;
-    rows.push_back(row);
+    rows.push_back(snapped(row));
     limits.push_back(joints[i].limits);
     const Eigen::Vector3d z_next = i + 1 < n ? axes[i + 1].direction : z;
     o = o_next;

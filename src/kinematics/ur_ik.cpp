@@ -60,6 +60,10 @@ bool elbow_up(double px, double cross) { return (px >= 0.0 ? cross : -cross) > 0
 
 std::string mm(double m) { return format_general(units::m_to_mm(m), 6) + " mm"; }
 
+// Below this |sin q5| a refusal says that the orientation's rounding may be what put the wrist
+// out of reach (q6 = atan2 of two numbers of this size).
+constexpr double kNearSingularWrist = 1e-6;
+
 // At the shoulder singularity q1 is known to about sqrt(rounding) only (the wrist centre's
 // distance from the upper arm's plane, d4, changes to second order in q1), and that noise in z1
 // would hide a singular wrist (z1 = +-z6): its q6 would come from noise instead of the free angle.
@@ -156,6 +160,7 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
   const double reach_max = std::abs(g.a2) + std::abs(g.a3);
   const double reach_min = std::abs(std::abs(g.a2) - std::abs(g.a3));
   double worst_reach = -1.0;
+  double nearest_singular_s5 = 1.0;    // |sin q5| of the failed branches
   std::string singular_reach_message;  // why a wrist-singular shoulder branch has no solution
 
   for (int shoulder = 0; shoulder < (shoulder_singular ? 1 : 2); ++shoulder) {
@@ -218,6 +223,7 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
       if (reach > reach_max + options.reach_tolerance_m ||
           reach < reach_min - options.reach_tolerance_m) {
         worst_reach = reach;
+        nearest_singular_s5 = std::min(nearest_singular_s5, s5_abs);
         continue;
       }
       const double c3 = std::clamp(
@@ -260,6 +266,12 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
                                               " from the shoulder, outside the arm's reach [" +
                                               mm(reach_min) + ", " + mm(reach_max) + "]"
                                         : singular_reach_message;
+    if (worst_reach >= 0.0 && nearest_singular_s5 <= kNearSingularWrist) {
+      result.message += "; the wrist is nearly singular (|sin q5| = " +
+                        format_general(nearest_singular_s5, 2) +
+                        "), where q6, and with it the wrist, follows the last digits of the "
+                        "orientation: give it to more digits";
+    }
     return result;
   }
 

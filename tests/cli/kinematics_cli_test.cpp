@@ -168,6 +168,12 @@ TEST(KinematicsCli, IkInvertsFkAtTheWristSingularity) {
   EXPECT_EQ(ik.status, 0) << command << "\n" << ik.out;
   EXPECT_NE(ik.out.find("singular: wrist"), std::string::npos) << ik.out;
   expect_round_trip("ur5", command.substr(command.find("--xyz-mm")), 0);
+  // The same pose rounded to 6 decimals: q6 now follows the rounding, which puts the wrist out of
+  // reach; the refusal says why.
+  const CliRun rounded = run(
+      "ik ur5 --xyz-mm -13.100067 -856.153506 -9.629098 --rpy-deg 90 4.010705 76.203387");
+  EXPECT_EQ(rounded.status, 3) << rounded.out;
+  EXPECT_NE(rounded.out.find("the wrist is nearly singular"), std::string::npos) << rounded.out;
 }
 
 TEST(KinematicsCli, BadInputIsOneLineAndExitStatusOne) {
