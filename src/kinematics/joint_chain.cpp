@@ -47,7 +47,7 @@ Eigen::Isometry3d frame(const Eigen::Vector3d& origin, const Eigen::Vector3d& x,
 
 // The conversion leaves rounding of ~1e-16 on what the joint list states exactly (a twist of
 // 90 deg, a link of 0.425 m): angles within 1e-12 rad of a multiple of 90 deg become that
-// multiple, lengths are rounded to the picometre (the nearest double to a decimal length), so
+// multiple, lengths are rounded to the femtometre (the nearest double to a decimal length), so
 // that a chain built like a built-in robot has its DH table to the bit.
 double snap_angle(double angle_rad) {
   const double quarter = std::numbers::pi / 2;
@@ -55,7 +55,7 @@ double snap_angle(double angle_rad) {
   return std::abs(angle_rad - k * quarter) <= 1e-12 ? k * quarter + 0.0 : angle_rad;
 }
 
-double snap_length(double length_m) { return std::round(length_m * 1e12) / 1e12 + 0.0; }
+double snap_length(double length_m) { return std::round(length_m * 1e15) / 1e15 + 0.0; }
 
 DhRow snapped(DhRow row) {
   row.a_m = snap_length(row.a_m);
