@@ -32,6 +32,7 @@ cmake --build --preset fuzz --target "${targets[@]}" || exit 2
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:symbolize=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp"  # third-party leaks only (urdfdom)
 failed=()
 for h in "${harnesses[@]}"; do
   corpus=build/fuzz/corpus/$h

@@ -73,9 +73,10 @@ void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
   if (!r.ok()) {
     std::printf("  no solution (%s): %s\n", kinematics::to_string(r.status), r.message.c_str());
   } else {
-    std::printf("  %zu solution%s%s; joint values in deg:\n", r.solutions.size(),
+    std::printf("  %zu solution%s%s; joint values in deg%s:\n", r.solutions.size(),
                 r.solutions.size() == 1 ? "" : "s",
-                args.current_deg.empty() ? "" : " (nearest the current joints)");
+                args.current_deg.empty() ? "" : " (nearest the current joints)",
+                prismatic_note(chain).c_str());
     std::printf("  #  %-40s", "configuration");
     for (int i = 0; i < chain.n_joints(); ++i)
       std::printf(" %11s", ("q" + std::to_string(i + 1)).c_str());
@@ -83,7 +84,7 @@ void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
     for (const kinematics::IkSolution& s : r.solutions) {
       std::printf("  %d  %-40s", s.config.index(), s.config.to_string().c_str());
       for (int i = 0; i < s.q_rad.size(); ++i)
-        std::printf(" %11.6f", units::rad_to_deg(s.q_rad(i)));
+        std::printf(" %11.6f", shown_joint_value(chain, static_cast<int>(i), s.q_rad(i)));
       if (s.singular != kinematics::kNoSingularity) {
         std::printf("  singular: %s", kinematics::singularity_names(s.singular).c_str());
       }
@@ -179,7 +180,7 @@ nlohmann::json ik_json(const kinematics::SerialChain& chain, const Eigen::Isomet
   for (const kinematics::IkSolution& s : r.solutions) {
     solutions.push_back(
         {{"q_rad", std::vector<double>(s.q_rad.data(), s.q_rad.data() + s.q_rad.size())},
-         {"q_deg", degrees_json(s.q_rad)},
+         {"q_deg", shown_joints_json(chain, s.q_rad)},
          {"config", s.config.to_string()},
          {"config_index", s.config.index()},
          {"singular", singular_json(s.singular)}});

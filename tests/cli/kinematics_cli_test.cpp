@@ -170,10 +170,23 @@ TEST(KinematicsCli, IkInvertsFkAtTheWristSingularity) {
   expect_round_trip("ur5", command.substr(command.find("--xyz-mm")), 0);
   // The same pose rounded to 6 decimals: q6 now follows the rounding, which puts the wrist out of
   // reach; the refusal says why.
-  const CliRun rounded = run(
-      "ik ur5 --xyz-mm -13.100067 -856.153506 -9.629098 --rpy-deg 90 4.010705 76.203387");
+  const CliRun rounded =
+      run("ik ur5 --xyz-mm -13.100067 -856.153506 -9.629098 --rpy-deg 90 4.010705 76.203387");
   EXPECT_EQ(rounded.status, 3) << rounded.out;
   EXPECT_NE(rounded.out.find("the wrist is nearly singular"), std::string::npos) << rounded.out;
+}
+
+// A URDF robot with a prismatic joint: fk, then every ik solution back through fk; the slide is
+// shown in mm.
+TEST(KinematicsCli, UrdfArmOnALinearAxis) {
+  const std::string rail = std::string(VRREG_TEST_DATA_DIR) + "/urdf/ur5_on_rail.urdf";
+  const nlohmann::json fk = run_json("fk " + rail + " -- 0.7 0.3 -1.2 1.4 -1.7 -1.5 0.2");
+  EXPECT_NEAR(fk["q_deg"][0].get<double>(), 700.0, 1e-9);
+  expect_round_trip(rail,
+                    "--xyz-mm" + numbers(fk["xyz_mm"]) + " --rpy-deg" + numbers(fk["rpy_deg"]), 0);
+  const CliRun human = run("fk --deg " + rail + " -- 700 0 0 0 0 0 0");
+  EXPECT_EQ(human.status, 0) << human.out;
+  EXPECT_NE(human.out.find("(q1 in mm: prismatic)"), std::string::npos) << human.out;
 }
 
 TEST(KinematicsCli, BadInputIsOneLineAndExitStatusOne) {
