@@ -14,3 +14,5 @@ if(VRREG_OPENCV_INCLUDE_DIR AND VRREG_OPENCV_CALIB3D_LIB AND VRREG_OPENCV_CORE_L
 else()
   message(STATUS "OpenCV calib3d not found: the hand-eye benchmark runs without its OpenCV peer")
 endif()
+# The URDF test robots (tests/data/urdf) for the numerical IK benchmarks.
+target_compile_definitions(vrreg_benchmarks PRIVATE VRREG_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -14,6 +14,7 @@
 #include <numbers>
 #include <vector>
 
+#include "kdl_support.hpp"
 #include "vrreg/core/random.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
@@ -125,22 +126,6 @@ void BM_vrreg_fk(benchmark::State& state) {
 
 // ---- Orocos KDL -------------------------------------------------------------------------------
 
-KDL::Chain to_kdl(const SerialChain& chain) {
-  KDL::Chain kdl;
-  for (const auto& r : chain.rows()) {
-    kdl.addSegment(KDL::Segment(KDL::Joint(KDL::Joint::RotZ),
-                                KDL::Frame::DH(r.a_m, r.alpha_rad, r.d_m, r.theta_offset_rad)));
-  }
-  return kdl;
-}
-
-KDL::Frame to_kdl(const Eigen::Isometry3d& t) {
-  const Eigen::Matrix3d& r = t.linear();
-  return KDL::Frame(KDL::Rotation(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0),
-                                  r(2, 1), r(2, 2)),
-                    KDL::Vector(t.translation().x(), t.translation().y(), t.translation().z()));
-}
-
 // A typical non-singular home posture as the seed (what a user without a nearby guess passes).
 KDL::JntArray seed(const SerialChain& chain) {
   constexpr double d = std::numbers::pi / 180.0;
@@ -168,7 +153,7 @@ void BM_kdl_ik(benchmark::State& state) {
   const SerialChain chain =
       state.range(0) != 0 ? vrreg::kinematics::lwr4() : vrreg::kinematics::ur5();
   const std::vector<Sample> samples = make_samples(chain);
-  const KDL::Chain kdl = to_kdl(chain);
+  const KDL::Chain kdl = vrreg::bench::kdl_chain(chain);
   const unsigned n = kdl.getNrOfJoints();
   KDL::JntArray q_min(n), q_max(n);
   for (unsigned i = 0; i < n; ++i) {
@@ -182,7 +167,7 @@ void BM_kdl_ik(benchmark::State& state) {
   const KDL::JntArray q_init = seed(chain);
   KDL::JntArray q_out(n);
   const auto solve = [&](const Sample& s) {
-    const KDL::Frame target = to_kdl(s.pose);
+    const KDL::Frame target = vrreg::bench::kdl_frame(s.pose);
     return kLma ? lma.CartToJnt(q_init, target, q_out) : nr_jl.CartToJnt(q_init, target, q_out);
   };
   std::size_t k = 0;

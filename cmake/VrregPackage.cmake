@@ -12,6 +12,7 @@ set(vrreg_external_Qhull "Qhull|qhull_r|libqhull-dev")
 set(vrreg_external_yaml-cpp "yaml-cpp|yaml-cpp|libyaml-cpp-dev")
 set(vrreg_external_nlohmann_json "nlohmann_json 3.10|nlohmann_json|nlohmann-json3-dev")
 set(vrreg_external_fmt "fmt|fmt|libfmt-dev")
+set(vrreg_external_urdfdom "urdfdom|urdfdom|liburdfdom-dev")
 
 get_property(modules GLOBAL PROPERTY VRREG_MODULES)
 get_property(external_deps GLOBAL PROPERTY VRREG_EXTERNAL_DEPS)

@@ -16,7 +16,7 @@ if ! [[ $seconds =~ ^[0-9]+$ ]] || ((seconds < 1)); then
   echo "fuzz.sh: SECONDS_PER_HARNESS must be a whole number >= 1, got '$seconds'" >&2
   exit 2
 fi
-all=(measurement_csv model_json robot_file error_model plan_csv parts_csv)
+all=(measurement_csv model_json robot_file error_model plan_csv parts_csv urdf)
 harnesses=("$@")
 ((${#harnesses[@]})) || harnesses=("${all[@]}")
 if ! command -v clang++ >/dev/null 2>&1; then
@@ -32,6 +32,7 @@ cmake --build --preset fuzz --target "${targets[@]}" || exit 2
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:symbolize=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp"  # third-party leaks only (urdfdom)
 failed=()
 for h in "${harnesses[@]}"; do
   corpus=build/fuzz/corpus/$h

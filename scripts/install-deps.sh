@@ -26,7 +26,7 @@ packages=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev libtbb-dev libnanoflann-dev libqhull-dev
   libyaml-cpp-dev libfmt-dev liborocos-kdl-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
-  liburdfdom-dev  # test-only: vrreg export's URDF read back (tests/robot_io)
+  liburdfdom-dev  # URDF robot files (robot_io); tests: vrreg export's URDF read back
   # benchmark-only peer (optional in CMake): OpenCV's calibrateRobotWorldHandEye beside the
   # marker-offset estimate (benchmarks/hand_eye_bench.cpp, docs/benchmarks.md)
   libopencv-calib3d-dev

@@ -32,7 +32,12 @@ void run_fk(const FkArgs& args) {
   kinematics::JointVector q(chain.n_joints());
   for (int i = 0; i < chain.n_joints(); ++i) {
     const double v = args.joints[static_cast<std::size_t>(i)];
-    q(i) = args.degrees ? units::deg_to_rad(v) : v;
+    // --deg: revolute joints in deg, prismatic ones in mm (without it: rad and m).
+    if (!args.degrees) {
+      q(i) = v;
+    } else {
+      q(i) = chain.row(i).prismatic() ? units::mm_to_m(v) : units::deg_to_rad(v);
+    }
   }
   const Eigen::Isometry3d pose = kinematics::forward_kinematics(chain, q);
   const std::optional<kinematics::ConfigurationLabel> config =
@@ -46,7 +51,7 @@ void run_fk(const FkArgs& args) {
     j["robot"] = chain.name();
     j["frame"] = pose_frame_description(chain);
     j["q_rad"] = std::vector<double>(q.data(), q.data() + q.size());
-    j["q_deg"] = degrees_json(q);
+    j["q_deg"] = shown_joints_json(chain, q);
     pose_to_json(pose, j);
     if (config) {
       j["config"] = config->to_string();
@@ -63,7 +68,8 @@ void run_fk(const FkArgs& args) {
   std::printf("%s forward kinematics: %s\n", chain.name().c_str(),
               pose_frame_description(chain).c_str());
   std::printf("  joints [deg]     ");
-  for (int i = 0; i < q.size(); ++i) std::printf(" %.6f", units::rad_to_deg(q(i)));
+  for (int i = 0; i < q.size(); ++i) std::printf(" %.6f", shown_joint_value(chain, i, q(i)));
+  std::printf("%s", prismatic_note(chain).c_str());
   std::printf("%s\n", in_limits ? "" : "   (outside the joint limits)");
   const std::string xyz = xyz_mm_text(pose.translation());
   const std::string rpy = rpy_deg_text(pose.linear());
@@ -83,8 +89,10 @@ void run_fk(const FkArgs& args) {
       std::printf("  singular          %s\n", kinematics::singularity_names(arm->singular).c_str());
     }
   }
+  // The pose to the picometre and 1e-12 deg, so that the command inverts it even where the IK is
+  // ill-conditioned: at a singular wrist, the last printed digit would move the free angle.
   std::printf("  back to joints:   vrreg ik %s --xyz-mm %s --rpy-deg %s", args.robot.c_str(),
-              xyz.c_str(), rpy.c_str());
+              xyz_mm_text(pose.translation(), 9).c_str(), rpy_deg_text(pose.linear(), 12).c_str());
   if (arm) std::printf(" --psi-deg %.6f", units::rad_to_deg(arm->psi_rad));
   if (!args.tool_mm.empty()) {
     std::printf(" --tool-mm %g %g %g", args.tool_mm[0], args.tool_mm[1], args.tool_mm[2]);
@@ -97,11 +105,14 @@ void add_fk_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "fk", "forward kinematics: the flange (or TCP) pose of a robot at given joint values");
   cmd->add_option("robot", args->robot,
-                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (JSON/YAML DH table)")
+                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (URDF, or JSON/YAML: a DH table "
+                  "or a URDF with its base and tip link)")
       ->required();
-  cmd->add_option("joints", args->joints, "joint values Q1 ... QN (rad, or deg with --deg)")
+  cmd->add_option("joints", args->joints,
+                  "joint values Q1 ... QN (rad, or deg with --deg; a prismatic joint's in m, or mm "
+                  "with --deg)")
       ->required();
-  cmd->add_flag("--deg", args->degrees, "joint values are in degrees");
+  cmd->add_flag("--deg", args->degrees, "joint values are in degrees (prismatic joints: mm)");
   cmd->add_option("--tool-mm", args->tool_mm,
                   "TCP offset X Y Z in the flange frame, mm (replaces the robot's tool)")
       ->expected(3);

@@ -1,5 +1,6 @@
-// vrreg ik: every analytic inverse-kinematics solution of a flange (or TCP) pose, each labelled
-// with its configuration; for the LWR 4+ at an arm angle psi, with the feasible psi ranges.
+// vrreg ik: every inverse-kinematics solution of a flange (or TCP) pose, each labelled with its
+// configuration (closed form for UR and LWR 4+ chains, at an arm angle psi with the feasible psi
+// ranges for the LWR; numerical for any other chain). No solution: the answer, then exit 3.
 #include <cstdio>
 #include <memory>
 
@@ -72,9 +73,10 @@ void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
   if (!r.ok()) {
     std::printf("  no solution (%s): %s\n", kinematics::to_string(r.status), r.message.c_str());
   } else {
-    std::printf("  %zu solution%s%s; joint values in deg:\n", r.solutions.size(),
+    std::printf("  %zu solution%s%s; joint values in deg%s:\n", r.solutions.size(),
                 r.solutions.size() == 1 ? "" : "s",
-                args.current_deg.empty() ? "" : " (nearest the current joints)");
+                args.current_deg.empty() ? "" : " (nearest the current joints)",
+                prismatic_note(chain).c_str());
     std::printf("  #  %-40s", "configuration");
     for (int i = 0; i < chain.n_joints(); ++i)
       std::printf(" %11s", ("q" + std::to_string(i + 1)).c_str());
@@ -82,7 +84,7 @@ void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
     for (const kinematics::IkSolution& s : r.solutions) {
       std::printf("  %d  %-40s", s.config.index(), s.config.to_string().c_str());
       for (int i = 0; i < s.q_rad.size(); ++i)
-        std::printf(" %11.6f", units::rad_to_deg(s.q_rad(i)));
+        std::printf(" %11.6f", shown_joint_value(chain, static_cast<int>(i), s.q_rad(i)));
       if (s.singular != kinematics::kNoSingularity) {
         std::printf("  singular: %s", kinematics::singularity_names(s.singular).c_str());
       }
@@ -108,6 +110,10 @@ void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
     }
   }
 }
+
+nlohmann::json ik_json(const kinematics::SerialChain& chain, const Eigen::Isometry3d& t,
+                       const IkResult& r, const std::optional<double>& psi_rad,
+                       const std::optional<kinematics::PsiIntervalsResult>& psi_ranges);
 
 void run_ik(const IkArgs& args) {
   const kinematics::SerialChain chain = robot_from_args(args.robot, args.tool_mm);
@@ -146,8 +152,19 @@ void run_ik(const IkArgs& args) {
 
   if (!args.json) {
     print_human(args, chain, t, r, psi_rad, psi_ranges);
-    return;
+  } else {
+    print_json(ik_json(chain, t, r, psi_rad, psi_ranges));
   }
+  if (!r.ok()) {
+    std::fflush(stdout);
+    throw NoSolution("ik: no solution (" + std::string(kinematics::to_string(r.status)) +
+                     "): " + r.message);
+  }
+}
+
+nlohmann::json ik_json(const kinematics::SerialChain& chain, const Eigen::Isometry3d& t,
+                       const IkResult& r, const std::optional<double>& psi_rad,
+                       const std::optional<kinematics::PsiIntervalsResult>& psi_ranges) {
   nlohmann::json j;
   j["robot"] = chain.name();
   j["frame"] = pose_frame_description(chain);
@@ -163,7 +180,7 @@ void run_ik(const IkArgs& args) {
   for (const kinematics::IkSolution& s : r.solutions) {
     solutions.push_back(
         {{"q_rad", std::vector<double>(s.q_rad.data(), s.q_rad.data() + s.q_rad.size())},
-         {"q_deg", degrees_json(s.q_rad)},
+         {"q_deg", shown_joints_json(chain, s.q_rad)},
          {"config", s.config.to_string()},
          {"config_index", s.config.index()},
          {"singular", singular_json(s.singular)}});
@@ -180,7 +197,7 @@ void run_ik(const IkArgs& args) {
     }
     j["feasible_psi_deg"] = ranges;
   }
-  print_json(j);
+  return j;
 }
 
 void add_ik_command(CLI::App& app) {
@@ -188,9 +205,11 @@ void add_ik_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "ik",
       "inverse kinematics: every joint solution of a flange (or TCP) pose, labelled by "
-      "arm configuration (UR: up to 8; LWR 4+: up to 8 per arm angle psi)");
+      "arm configuration (UR: up to 8; LWR 4+: up to 8 per arm angle psi; any other chain: "
+      "numerically, one per configuration class found); exit status 3 when there is none");
   cmd->add_option("robot", args->robot,
-                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (JSON/YAML DH table)")
+                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (URDF, or JSON/YAML: a DH table "
+                  "or a URDF with its base and tip link)")
       ->required();
   cmd->add_option("--xyz-mm", args->xyz_mm, "position X Y Z in mm")->expected(3)->required();
   cmd->add_option("--rpy-deg", args->rpy_deg,

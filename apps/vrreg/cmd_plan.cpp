@@ -181,7 +181,7 @@ void add_plan_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--robot", args->robot,
                   "ur5, lwr4 (defaults from the simulated test bed), ur3, ur10, ur5e, or a robot "
-                  "file")
+                  "file (URDF, or JSON/YAML)")
       ->required();
   cmd->add_option("--sigma-noise-mm", args->sigma_noise_mm,
                   "noise sigma_noise in mm for d_min > 2.5 sigma_noise (Eq. 9); default the "

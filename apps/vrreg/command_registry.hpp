@@ -3,6 +3,7 @@
 // touches no other file. `order` fixes the position in --help.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 namespace vrreg::cli {
@@ -15,6 +16,13 @@ struct CommandEntry {
 };
 
 std::vector<CommandEntry>& command_registry();
+
+/// Thrown by a command after it printed its answer when that answer is a refusal (vrreg ik found
+/// no solution): main prints the message as one line on stderr and exits with status 3.
+class NoSolution : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct CommandRegistrar {
   CommandRegistrar(int order, CommandSetup setup) {

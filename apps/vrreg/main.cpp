@@ -1,6 +1,7 @@
 // vrreg: the command line. Parses, calls the library, writes through io. The only place that
 // catches exceptions and maps them to exit codes:
-//   0 success, 1 bad input or a failed computation (one line on stderr), 2 usage error.
+//   0 success, 1 bad input or a failed computation (one line on stderr), 2 usage error,
+//   3 the command answered but found no solution (vrreg ik; one line on stderr).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <exception>
@@ -47,6 +48,10 @@ int main(int argc, char** argv) {
       help = "vrreg " + command->get_name() + " --help";
     std::cerr << "vrreg: usage error: " << message << " (see " << help << ")\n";
     return 2;
+  } catch (const vrreg::cli::NoSolution& e) {
+    std::cout.flush();
+    std::cerr << "vrreg: " << e.what() << "\n";
+    return 3;
   } catch (const std::bad_alloc&) {
     std::cerr << "vrreg: error: out of memory\n";
     return 1;

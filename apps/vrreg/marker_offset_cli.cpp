@@ -34,8 +34,9 @@ void MarkerOffsetFlags::add_to(CLI::App& command) {
       ->check(CLI::Range(0.0, 10.0));
   command.add_option("--robot", robot,
                      "the robot whose joints the file gives (ur3, ur5, ur10, ur5e, lwr4 or a robot "
-                     "file; its tool is ignored): for --estimate-marker-offset and "
-                     "--marker-offset-mm, and stored in the model for --interpolation joint");
+                     "file, URDF or JSON/YAML; its tool is ignored): for "
+                     "--estimate-marker-offset and --marker-offset-mm, and stored in the model for "
+                     "--interpolation joint");
   command
       .add_option("--min-orientation-spread", min_orientation_spread,
                   "with --estimate-marker-offset: smallest RMS tilt [rad] for which the offset is "

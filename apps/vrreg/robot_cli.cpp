@@ -80,3 +80,26 @@ nlohmann::json degrees_json(const Eigen::Ref<const Eigen::VectorXd>& q_rad) {
 }
 
 }  // namespace vrreg::cli
+
+namespace vrreg::cli {
+
+double shown_joint_value(const kinematics::SerialChain& chain, int i, double q) {
+  return chain.row(i).prismatic() ? units::m_to_mm(q) : units::rad_to_deg(q);
+}
+
+nlohmann::json shown_joints_json(const kinematics::SerialChain& chain,
+                                 const Eigen::Ref<const Eigen::VectorXd>& q) {
+  nlohmann::json out = nlohmann::json::array();
+  for (int i = 0; i < chain.n_joints(); ++i) out.push_back(shown_joint_value(chain, i, q(i)));
+  return out;
+}
+
+std::string prismatic_note(const kinematics::SerialChain& chain) {
+  std::string joints;
+  for (int i = 0; i < chain.n_joints(); ++i) {
+    if (chain.row(i).prismatic()) joints += (joints.empty() ? "q" : ", q") + std::to_string(i + 1);
+  }
+  return joints.empty() ? "" : " (" + joints + " in mm: prismatic)";
+}
+
+}  // namespace vrreg::cli

@@ -33,6 +33,14 @@ nlohmann::json singular_json(std::uint8_t flags);
 /// Joint values in degrees as a JSON array.
 nlohmann::json degrees_json(const Eigen::Ref<const Eigen::VectorXd>& q_rad);
 
+/// Joint `i`'s value as shown: deg for a revolute joint, mm for a prismatic one.
+double shown_joint_value(const kinematics::SerialChain& chain, int i, double q);
+/// Joint values as shown (deg, mm for prismatic joints) as a JSON array.
+nlohmann::json shown_joints_json(const kinematics::SerialChain& chain,
+                                 const Eigen::Ref<const Eigen::VectorXd>& q);
+/// "" for an all-revolute chain, else e.g. " (q1 in mm: prismatic)".
+std::string prismatic_note(const kinematics::SerialChain& chain);
+
 /// Throws InputError unless every value is finite; `what` names the option.
 void check_finite(const std::vector<double>& values, const char* what);
 

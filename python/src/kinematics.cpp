@@ -1,5 +1,6 @@
-// Forward and inverse kinematics of the built-in arms (UR3/5/10/5e, KUKA LWR 4+): TCP = flange
-// unless a tool offset is given; every analytic IK solution with its configuration label.
+// Forward and inverse kinematics of the built-in arms (UR3/5/10/5e, KUKA LWR 4+) and of robot
+// files (DH or URDF): TCP = flange unless a tool offset is given; every IK solution with its
+// configuration label (analytic for UR and LWR chains, numerical for any other).
 #include <pybind11/stl.h>
 
 #include "arrays.hpp"
@@ -8,16 +9,17 @@
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/inverse_kinematics.hpp"
 #include "vrreg/kinematics/robots.hpp"
+#include "vrreg/robot_io/robot_file.hpp"
 
 namespace vrreg::python {
 namespace {
 
+// A built-in name or a robot file (DH JSON/YAML, or URDF), as `--robot` on the command line.
 kinematics::SerialChain chain_named(const std::string& robot, const py::object& tool) {
-  std::optional<kinematics::SerialChain> chain = kinematics::robot_by_name(robot);
-  VRREG_THROW_UNLESS(chain, "unknown robot '" << robot << "' (ur3, ur5, ur10, ur5e, lwr4)");
-  if (tool.is_none()) return *chain;
+  const kinematics::SerialChain chain = io::load_robot(robot);
+  if (tool.is_none()) return chain;
   const Eigen::VectorXd offset = vector_from(tool, "tool", 3);
-  return chain->with_tool(Eigen::Isometry3d(Eigen::Translation3d(offset)));
+  return chain.with_tool(Eigen::Isometry3d(Eigen::Translation3d(offset)));
 }
 
 Eigen::Isometry3d pose_from(const py::object& pose) {
@@ -44,8 +46,9 @@ void bind_kinematics(py::module_& m) {
         return matrix_copy(kinematics::forward_kinematics(chain, q_rad).matrix());
       },
       py::arg("robot"), py::arg("q"), py::kw_only(), py::arg("tool") = py::none(),
-      "T_base_tcp (4, 4) at joints q [rad] of a built-in robot ('ur3', 'ur5', 'ur10', 'ur5e', "
-      "'lwr4'); translation in METRES, base frame. tool: (3,) TCP offset in the flange frame [m].");
+      "T_base_tcp (4, 4) at joints q [rad; m for a prismatic joint] of a built-in robot ('ur3', "
+      "'ur5', 'ur10', 'ur5e', 'lwr4') or a robot file (DH JSON/YAML, or URDF); translation in "
+      "METRES, base frame. tool: (3,) TCP offset in the flange frame [m].");
 
   m.def(
       "ik",
@@ -79,9 +82,11 @@ void bind_kinematics(py::module_& m) {
       },
       py::arg("robot"), py::arg("pose"), py::kw_only(), py::arg("psi") = py::none(),
       py::arg("tool") = py::none(), py::arg("joint_limits") = true,
-      "Every analytic IK solution of TCP pose `pose` ((4, 4), translation in METRES, base frame): "
-      "a dict with q (S, n_joints) [rad], configs (labels such as "
-      "'shoulder-left/elbow-up/wrist-noflip' or 'GC=+,-,+'), config_indices, singular, status "
+      "Every IK solution of TCP pose `pose` ((4, 4), translation in METRES, base frame) of a "
+      "built-in robot or a robot file (analytic for UR and LWR chains; else numerical, one per "
+      "configuration class found): a dict with q (S, n_joints) [rad], configs (labels such as "
+      "'shoulder-left/elbow-up/wrist-noflip', 'GC=+,-,+' or 'q3+,q5-'), config_indices, "
+      "singular, status "
       "('ok', 'unreachable', 'outside-limits') and message. psi: LWR 4+ arm angle [rad] "
       "(default 0); tool: (3,) TCP offset in the flange frame [m].");
   m.def("robots", &kinematics::builtin_robot_names, "Names fk and ik accept.");

@@ -1,4 +1,6 @@
 """UR and LWR 4+ kinematics: every IK solution reaches the pose (FK to 1e-12 m)."""
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -43,3 +45,21 @@ def test_tool_offset():
     flange = vrreg.fk("ur5", q)
     tcp = vrreg.fk("ur5", q, tool=[0, 0, 0.1])
     assert np.allclose(tcp[:3, 3], flange[:3, 3] + 0.1 * flange[:3, 2], atol=1e-15)
+
+
+URDF = Path(__file__).resolve().parents[2] / "tests" / "data" / "urdf"
+
+
+def test_urdf_robots_fk_and_ik():
+    # ROS-Industrial style UR5: root base_link is the DH base turned by pi about z.
+    q = np.array([0.3, -1.2, 1.4, -1.7, -1.5, 0.2])
+    turn = np.diag([-1.0, -1.0, 1.0, 1.0])
+    assert np.allclose(vrreg.fk(str(URDF / "ur5.urdf"), q), turn @ vrreg.fk("ur5", q), atol=1e-12)
+    # A 6-axis arm on a linear axis: numerical IK, every solution reaches the pose.
+    rail = str(URDF / "ur5_on_rail.urdf")
+    q7 = np.array([0.7, 0.3, -1.2, 1.4, -1.7, -1.5, 0.2])
+    pose = vrreg.fk(rail, q7)
+    result = vrreg.ik(rail, pose)
+    assert result["status"] == "ok" and len(result["configs"]) >= 1
+    for solution in result["q"]:
+        assert np.max(np.abs(vrreg.fk(rail, solution)[:3, 3] - pose[:3, 3])) < 1e-12

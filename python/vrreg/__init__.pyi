@@ -262,10 +262,10 @@ def estimate_marker_offset(robot: str, joints: ArrayLike, sensor: ArrayLike, *,
                            min_orientation_spread: float = 0.02) -> dict[str, Any]:
     """T_robot_sensor and the marker offset in the flange frame (m), with uncertainties."""
 def fk(robot: str, q: ArrayLike, *, tool: Optional[ArrayLike] = None) -> Array:
-    """T_base_tcp (4, 4), translation in metres."""
+    """T_base_tcp (4, 4), translation in metres; robot: built-in name or robot file (DH, URDF)."""
 def ik(robot: str, pose: ArrayLike, *, psi: Optional[float] = None,
        tool: Optional[ArrayLike] = None, joint_limits: bool = True) -> dict[str, Any]:
-    """Every analytic IK solution: q (S, n) [rad], configs, config_indices, singular, status."""
+    """Every IK solution: q (S, n) [rad], configs, config_indices, singular, status."""
 def robots() -> list[str]: ...
 def plan(parts: ArrayLike, names: Sequence[str], *, robot: str = "ur5", halfwidth: float,
          spacing: float, sigma_noise: Optional[float] = None, force: bool = False,

@@ -1,5 +1,6 @@
 #include "model_chain_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -53,6 +54,16 @@ ojson chain_json(const kinematics::SerialChain& chain, bool with_tool, const cha
     limits.push_back(finite_row({l.lower_rad, l.upper_rad}, what, "joint_limits_rad"));
   }
   robot["joint_limits_rad"] = std::move(limits);
+  // Only a chain with a prismatic joint says which joints are which (older files have none).
+  const auto& rows = chain.rows();
+  const auto slides = [](const kinematics::DhRow& r) { return r.prismatic(); };
+  if (std::any_of(rows.begin(), rows.end(), slides)) {
+    ojson types = ojson::array();
+    for (const kinematics::DhRow& row : rows) {
+      types.push_back(row.prismatic() ? "prismatic" : "revolute");
+    }
+    robot["joint_types"] = std::move(types);
+  }
   robot["T_base_dh0_m"] = matrix_json(chain.T_base_dh0().matrix(), what, "T_base_dh0");
   if (with_tool) robot["T_flange_tcp_m"] = matrix_json(chain.T_flange_tcp().matrix(), what, "T_flange_tcp");
   return robot;
@@ -80,6 +91,19 @@ kinematics::SerialChain read_chain(const nlohmann::json& robot, const std::strin
     const std::vector<double> l =
         f.array_of_numbers(limits[i], join_path(robot_path, "joint_limits_rad") + at, 2);
     joint_limits.push_back({l[0], l[1]});
+  }
+  if (robot.contains("joint_types")) {
+    const nlohmann::json& types = robot.at("joint_types");
+    const std::string path = join_path(robot_path, "joint_types");
+    if (!types.is_array() || types.size() != rows.size()) {
+      f.fail(path, "expected one type per DH row");
+    }
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (types[i] != "revolute" && types[i] != "prismatic") {
+        f.fail(path + "[" + std::to_string(i) + "]", "expected \"revolute\" or \"prismatic\"");
+      }
+      if (types[i] == "prismatic") rows[i].type = kinematics::JointType::kPrismatic;
+    }
   }
   const Eigen::Isometry3d T_base_dh0 = read_matrix(robot, robot_path, "T_base_dh0_m", f);
   const Eigen::Isometry3d T_flange_tcp = robot.contains("T_flange_tcp_m")

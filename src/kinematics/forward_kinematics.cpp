@@ -31,11 +31,16 @@ Jacobian jacobian(const SerialChain& chain, const JointRef& q_rad) {
   const Eigen::Vector3d p_tcp = (frames.back() * chain.T_flange_tcp()).translation();
   Jacobian j(6, chain.n_joints());
   for (int i = 0; i < chain.n_joints(); ++i) {
-    // Joint i+1 turns about z of frame i, through the origin of frame i.
+    // Joint i+1 turns about (or slides along) z of frame i, through the origin of frame i.
     const Eigen::Isometry3d& f = frames[static_cast<std::size_t>(i)];
     const Eigen::Vector3d z = f.linear().col(2);
-    j.block<3, 1>(0, i) = z.cross(p_tcp - f.translation());
-    j.block<3, 1>(3, i) = z;
+    if (chain.row(i).prismatic()) {
+      j.block<3, 1>(0, i) = z;
+      j.block<3, 1>(3, i).setZero();
+    } else {
+      j.block<3, 1>(0, i) = z.cross(p_tcp - f.translation());
+      j.block<3, 1>(3, i) = z;
+    }
   }
   return j;
 }

@@ -4,6 +4,7 @@
 
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/lwr_ik.hpp"
+#include "vrreg/kinematics/numeric_ik.hpp"
 #include "vrreg/kinematics/ur_ik.hpp"
 
 namespace vrreg::kinematics {
@@ -21,11 +22,10 @@ IkResult inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T
     case ChainFamily::kGeneric:
       break;
   }
-  VRREG_THROW_UNLESS(false, "inverse kinematics: robot '"
-                                << chain.name()
-                                << "' has neither the UR nor the LWR 4+ structure; no analytic "
-                                   "IK applies to its DH table");
-  return {};
+  options.validate();
+  NumericIkOptions numeric;
+  numeric.apply_joint_limits = options.apply_joint_limits;
+  return numeric_inverse_kinematics(chain, T_base_tcp, numeric);
 }
 
 IkResult nearest_solution(const SerialChain& chain, const IkResult& all,
@@ -69,7 +69,7 @@ std::optional<ConfigurationLabel> configuration_of(const SerialChain& chain,
     case ChainFamily::kGeneric:
       break;
   }
-  return std::nullopt;
+  return generic_configuration(chain, q_rad);
 }
 
 }  // namespace vrreg::kinematics

@@ -25,7 +25,11 @@ std::optional<JointVector> shift_towards(const SerialChain& chain, const JointRe
     const JointLimits& l = chain.limit(i);
     const double target = reference != nullptr ? (*reference)(i) : 0.0;
     double v = q_rad(i);
-    if (!detail::shift_joint(v, l, target)) return std::nullopt;
+    if (chain.row(i).prismatic()) {  // a slide has no turns to shift by
+      if (!(v >= l.lower_rad && v <= l.upper_rad)) return std::nullopt;
+    } else if (!detail::shift_joint(v, l, target)) {
+      return std::nullopt;
+    }
     out(i) = v;
   }
   return out;

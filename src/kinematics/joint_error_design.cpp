@@ -96,7 +96,9 @@ SerialChain perturbed_chain(const JointErrorModel::State& s, const Eigen::Vector
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const int k = c + 3 * static_cast<int>(i);
     rows[i].a_m += x(k);
-    rows[i].d_m += x(k + 1);
+    // A prismatic joint's d is its variable (its offset is the joint function's constant term):
+    // its second geometric parameter is theta.
+    (rows[i].prismatic() ? rows[i].theta_offset_rad : rows[i].d_m) += x(k + 1);
     rows[i].alpha_rad += x(k + 2);
   }
   return SerialChain(s.nominal.name(), std::move(rows), s.nominal.limits(), s.nominal.T_base_dh0(),
@@ -138,7 +140,7 @@ void design_rows(const JointErrorModel::State& s, const SerialChain& chain_x,
     if (l.dh) {
       const int h = l.dh_column() + 3 * i;
       rows.col(h) = d.d_a.col(i);
-      rows.col(h + 1) = d.d_d.col(i);
+      rows.col(h + 1) = chain_x.row(i).prismatic() ? d.d_theta.col(i) : d.d_d.col(i);
       rows.col(h + 2) = d.d_alpha.col(i);
     }
   }

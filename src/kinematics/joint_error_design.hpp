@@ -3,8 +3,9 @@
 // basis functions and the design rows d e / d x of one fiducial.
 //
 // Parameter layout (columns of the design matrix, in this order):
-//   per joint i: c_i0 .. c_iD_i   Legendre coefficients of dq_i [rad]
-//   per DH row i (dh_deltas): delta a_i [m], delta d_i [m], delta alpha_i [rad]
+//   per joint i: c_i0 .. c_iD_i   Legendre coefficients of dq_i [rad; prismatic: m]
+//   per DH row i (dh_deltas): delta a_i [m], delta d_i [m] (prismatic: delta theta_i [rad]),
+//                             delta alpha_i [rad]
 //   marker (marker_offset): delta p_flange_marker x, y, z [m]
 //   trend: for axis x, y, z the monomials of (p_nominal - centre) / scale, 1, 4 or 10 each [m]
 //   per periodic term m: s_m, c_m, amplitudes of sin and cos (omega_m q_joint) in dq_joint [rad]

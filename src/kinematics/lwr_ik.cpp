@@ -6,6 +6,7 @@
 #include "limits_fit.hpp"
 #include "lwr_solver.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/pose.hpp"
 
@@ -96,7 +97,17 @@ LwrArmState lwr_arm_state(const SerialChain& chain, const JointRef& q_rad,
   if (std::abs(std::sin(theta[3])) <= singular_tolerance) state.singular |= kElbowSingular;
   if (std::abs(std::sin(theta[5])) <= singular_tolerance) state.singular |= kWristSingular;
   if (!frame.reachable) return state;
-  // psi is ill-conditioned near kElbowSingular and 0 when the elbow is exactly on the axis.
+  if ((state.singular & kElbowSingular) != 0) {
+    // The elbow lies on the shoulder-wrist axis, so it does not tell psi; the shoulder frame does:
+    // R03 = R_u(psi) R03_ref. An elbow flip turns R03 by pi about its y axis: undo it first (the
+    // shoulder flip leaves R03 as it is).
+    const double theta3 = theta[3] < 0.0 ? theta[2] - units::kPi : theta[2];
+    const Eigen::Matrix3d r03 = detail::lwr_shoulder_rotation(theta[0], theta[1], theta3);
+    const Eigen::Matrix3d m = r03 * frame.r03_reference.transpose();
+    const Eigen::Vector3d axis_sin(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
+    state.psi_rad = std::atan2(0.5 * frame.u.dot(axis_sin), 0.5 * (m.trace() - 1.0));
+    return state;
+  }
   // Elbow direction z2 = (-c1 s2, -s1 s2, c2); the reference elbow direction is -R03_ref col 1.
   const Eigen::Vector3d e(-std::cos(theta[0]) * std::sin(theta[1]),
                           -std::sin(theta[0]) * std::sin(theta[1]), std::cos(theta[1]));

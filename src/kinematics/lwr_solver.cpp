@@ -7,6 +7,7 @@
 //   others as computed, so that rounding cancels and singular cases stay exact.
 #include "lwr_solver.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -150,6 +151,18 @@ LwrBaseSolution lwr_base_solution(const LwrPoseFrame& f, double psi_rad, const I
     s.singular |= kWristSingular;
   }
   return s;
+}
+
+Eigen::Matrix3d lwr_shoulder_rotation(double theta1, double theta2, double theta3) {
+  const auto p = [](double t) {
+    return Eigen::AngleAxisd(t, Eigen::Vector3d::UnitZ()) *
+           Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitX());
+  };
+  const auto m = [](double t) {
+    return Eigen::AngleAxisd(t, Eigen::Vector3d::UnitZ()) *
+           Eigen::AngleAxisd(-kPi / 2, Eigen::Vector3d::UnitX());
+  };
+  return (p(theta1) * m(theta2) * m(theta3)).toRotationMatrix();
 }
 
 void lwr_flip(const double base[7], int index, double out[7]) {

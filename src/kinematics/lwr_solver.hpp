@@ -41,6 +41,9 @@ LwrPoseFrame lwr_pose_frame(const LwrGeometry& g, const Eigen::Matrix3d& r_dh0_f
                             const Eigen::Vector3d& p_dh0_flange, double singular_tolerance,
                             double reach_tolerance_m);
 
+/// R03 = P(theta1) M(theta2) M(theta3): the shoulder's rotation for DH angles theta1..3 [rad].
+Eigen::Matrix3d lwr_shoulder_rotation(double theta1, double theta2, double theta3);
+
 /// DH angles of the base configuration GC = (+, +, +) at arm angle psi.
 struct LwrBaseSolution {
   double theta[7];

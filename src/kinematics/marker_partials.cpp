@@ -14,6 +14,7 @@ MarkerPartials marker_partials(const SerialChain& chain, const JointRef& q_rad,
   out.R_base_flange = frames.back().linear();
   out.position_m = frames.back() * p_flange_marker_m;
   out.d_joint.resize(3, n);
+  out.d_theta.resize(3, n);
   out.d_a.resize(3, n);
   out.d_d.resize(3, n);
   out.d_alpha.resize(3, n);
@@ -22,8 +23,9 @@ MarkerPartials marker_partials(const SerialChain& chain, const JointRef& q_rad,
     const Eigen::Isometry3d& after = frames[static_cast<std::size_t>(i) + 1];  // frame i
     const Eigen::Vector3d z = before.linear().col(2);
     const Eigen::Vector3d x = after.linear().col(0);  // Rx(alpha) leaves x_i where Tx(a) put it
-    out.d_joint.col(i) = z.cross(out.position_m - before.translation());
+    out.d_theta.col(i) = z.cross(out.position_m - before.translation());
     out.d_d.col(i) = z;
+    out.d_joint.col(i) = chain.row(i).prismatic() ? out.d_d.col(i) : out.d_theta.col(i);
     out.d_a.col(i) = x;
     out.d_alpha.col(i) = x.cross(out.position_m - after.translation());
   }

@@ -1,5 +1,6 @@
 #include "vrreg/kinematics/serial_chain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -23,8 +24,12 @@ bool angle_near(double value_rad, double expected_rad, double tolerance) {
   return std::abs(wrap_angle(value_rad - expected_rad)) <= tolerance;
 }
 
+bool all_revolute(const std::vector<DhRow>& rows) {
+  return std::none_of(rows.begin(), rows.end(), [](const DhRow& r) { return r.prismatic(); });
+}
+
 bool has_ur_structure(const std::vector<DhRow>& rows, double tol) {
-  if (rows.size() != 6) return false;
+  if (rows.size() != 6 || !all_revolute(rows)) return false;
   const double alpha[6] = {kPi / 2, 0.0, 0.0, kPi / 2, -kPi / 2, 0.0};
   for (std::size_t i = 0; i < 6; ++i) {
     if (!angle_near(rows[i].alpha_rad, alpha[i], tol)) return false;
@@ -35,7 +40,7 @@ bool has_ur_structure(const std::vector<DhRow>& rows, double tol) {
 }
 
 bool has_lwr_structure(const std::vector<DhRow>& rows, double tol) {
-  if (rows.size() != 7) return false;
+  if (rows.size() != 7 || !all_revolute(rows)) return false;
   const double alpha[7] = {kPi / 2, -kPi / 2, -kPi / 2, kPi / 2, kPi / 2, -kPi / 2, 0.0};
   for (std::size_t i = 0; i < 7; ++i) {
     if (!angle_near(rows[i].alpha_rad, alpha[i], tol) || !near(rows[i].a_m, 0.0, tol)) {

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "limits_fit.hpp"
@@ -59,6 +60,64 @@ bool elbow_up(double px, double cross) { return (px >= 0.0 ? cross : -cross) > 0
 
 std::string mm(double m) { return format_general(units::m_to_mm(m), 6) + " mm"; }
 
+// Below this |sin q5| a refusal says that the orientation's rounding may be what put the wrist
+// out of reach (q6 = atan2 of two numbers of this size).
+constexpr double kNearSingularWrist = 1e-6;
+
+// At the shoulder singularity q1 is known to about sqrt(rounding) only (the wrist centre's
+// distance from the upper arm's plane, d4, changes to second order in q1), and that noise in z1
+// would hide a singular wrist (z1 = +-z6): its q6 would come from noise instead of the free angle.
+// When a q1 with z1 = +-z6 satisfies z1 . o5 = d4 as well as the computed one does, take it.
+void snap_to_singular_wrist(const Eigen::Vector3d& o5, const Eigen::Vector3d& z6, double d4,
+                            double tolerance, double& theta1, double& c1, double& s1) {
+  const double horizontal = std::hypot(z6.x(), z6.y());
+  if (!(horizontal > 0.0) || std::abs(z6.z()) > tolerance * horizontal) return;
+  const double side = s1 * z6.x() - c1 * z6.y() >= 0.0 ? 1.0 : -1.0;  // sign of z1 . z6
+  const double s1_wrist = side * z6.x() / horizontal;
+  const double c1_wrist = -side * z6.y() / horizontal;
+  const double radius = std::hypot(o5.x(), o5.y());
+  const double allowed = 16.0 * std::numeric_limits<double>::epsilon() * std::max(radius, 1.0);
+  const double miss = std::abs(s1_wrist * o5.x() - c1_wrist * o5.y() - d4);
+  if (miss > std::max(allowed, std::abs(s1 * o5.x() - c1 * o5.y() - d4))) return;
+  c1 = c1_wrist;
+  s1 = s1_wrist;
+  theta1 = std::atan2(s1, c1);
+}
+
+// The wrist-singular q6 (sin q5 ~ 0). There the frame-4 origin o4 = o5 + d5 (s6 x6 + c6 y6)
+// moves on a circle of radius d5 about the wrist centre in the arm plane as q6 turns, so q6
+// decides whether the planar arm reaches o4: |o4 - S|^2 = |C|^2 + d5^2 + 2 d5 |C| cos(q6 - gamma),
+// with C the wrist centre relative to the shoulder S in the arm plane and gamma its angle in the
+// (y6, x6) basis. Returns theta6 = `theta6_wanted` when that reach is within [reach_min,
+// reach_max], else the feasible theta6 nearest it; empty when no theta6 is feasible, with the
+// range of |o4 - S| over the circle in `reach_range`.
+std::optional<double> feasible_singular_theta6(double theta6_wanted, const Eigen::Vector2d& centre,
+                                               const Eigen::Vector2d& u, const Eigen::Vector2d& v,
+                                               double d5, double reach_min, double reach_max,
+                                               double tolerance_m, double reach_range[2]) {
+  const double c_norm = centre.norm();
+  const double lever = 2.0 * std::abs(d5) * c_norm;
+  reach_range[0] = std::abs(c_norm - std::abs(d5));
+  reach_range[1] = c_norm + std::abs(d5);
+  if (reach_range[1] < reach_min - tolerance_m || reach_range[0] > reach_max + tolerance_m) {
+    return std::nullopt;
+  }
+  if (lever == 0.0) return theta6_wanted;  // o4 does not move with q6: reach checked above
+  // cos(q6 - gamma) within [lo, hi] keeps |o4 - S| within the reach.
+  const double base = c_norm * c_norm + d5 * d5;
+  const double lo = (reach_min * reach_min - base) / lever;
+  const double hi = (reach_max * reach_max - base) / lever;
+  // d5 (s6 u + c6 v) . C = d5 |C| cos(q6 - gamma): gamma from the coordinates of d5 C in (u, v).
+  const double gamma = std::atan2(d5 * centre.dot(u), d5 * centre.dot(v));
+  const double smallest = std::acos(std::clamp(hi, -1.0, 1.0));  // least |q6 - gamma| allowed
+  const double largest = std::acos(std::clamp(lo, -1.0, 1.0));   // most |q6 - gamma| allowed
+  const double delta = wrap_angle(theta6_wanted - gamma);
+  const double side = delta < 0.0 ? -1.0 : 1.0;
+  if (std::abs(delta) < smallest) return gamma + side * smallest;
+  if (std::abs(delta) > largest) return gamma + side * largest;
+  return theta6_wanted;
+}
+
 }  // namespace
 
 IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T_base_tcp,
@@ -101,15 +160,18 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
   const double reach_max = std::abs(g.a2) + std::abs(g.a3);
   const double reach_min = std::abs(std::abs(g.a2) - std::abs(g.a3));
   double worst_reach = -1.0;
+  double nearest_singular_s5 = 1.0;    // |sin q5| of the failed branches
+  std::string singular_reach_message;  // why a wrist-singular shoulder branch has no solution
 
   for (int shoulder = 0; shoulder < (shoulder_singular ? 1 : 2); ++shoulder) {
     // shoulder 0: h = +h_abs (q1 = phi + alpha); 1: h = -h_abs (q1 = phi + pi - alpha).
     const double h_sign = shoulder == 0 ? 1.0 : -1.0;
-    const double theta1 = shoulder == 0 ? phi + alpha : phi + kPi - alpha;
+    double theta1 = shoulder == 0 ? phi + alpha : phi + kPi - alpha;
     // cos/sin of q1 without trigonometry: rotate (cos phi, sin phi) by alpha or pi - alpha.
     const double ca = h_sign * cos_alpha;
-    const double c1 = cos_phi * ca - sin_phi * sin_alpha;
-    const double s1 = sin_phi * ca + cos_phi * sin_alpha;
+    double c1 = cos_phi * ca - sin_phi * sin_alpha;
+    double s1 = sin_phi * ca + cos_phi * sin_alpha;
+    if (shoulder_singular) snap_to_singular_wrist(o5, z6, g.d4, tol, theta1, c1, s1);
     const Eigen::Vector3d z1(s1, -c1, 0.0);
     const double zx = z1.dot(x6), zy = z1.dot(y6), c5 = z1.dot(z6);
     const double s5_abs = std::sqrt(zx * zx + zy * zy);
@@ -120,6 +182,22 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
     double theta6_noflip = options.singular_free_angle_rad + g.offset[5];
     double s6_noflip = 0.0, c6_noflip = 1.0;
     if (wrist_singular) {
+      const Eigen::Vector2d centre(c1 * o5.x() + s1 * o5.y(), o5.z() - g.d1);
+      const Eigen::Vector2d u(c1 * x6.x() + s1 * x6.y(), x6.z());
+      const Eigen::Vector2d v(c1 * y6.x() + s1 * y6.y(), y6.z());
+      double range[2];
+      const std::optional<double> theta6 =
+          feasible_singular_theta6(theta6_noflip, centre, u, v, g.d5, reach_min, reach_max,
+                                   options.reach_tolerance_m, range);
+      if (!theta6) {
+        singular_reach_message = "at the wrist singularity (sin q5 = 0) the wrist (frame 4 "
+                                 "origin) stays " +
+                                 mm(range[0]) + " to " + mm(range[1]) +
+                                 " from the shoulder whatever q6, outside the arm's reach [" +
+                                 mm(reach_min) + ", " + mm(reach_max) + "]";
+        continue;
+      }
+      theta6_noflip = *theta6;
       s6_noflip = std::sin(theta6_noflip);
       c6_noflip = std::cos(theta6_noflip);
     } else {
@@ -145,6 +223,7 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
       if (reach > reach_max + options.reach_tolerance_m ||
           reach < reach_min - options.reach_tolerance_m) {
         worst_reach = reach;
+        nearest_singular_s5 = std::min(nearest_singular_s5, s5_abs);
         continue;
       }
       const double c3 = std::clamp(
@@ -183,9 +262,16 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
   }
   result.singular = pose_flags;
   if (n_branches == 0) {
-    result.message = "the wrist (frame 4 origin) is " + mm(worst_reach) +
-                     " from the shoulder, outside the arm's reach [" + mm(reach_min) + ", " +
-                     mm(reach_max) + "]";
+    result.message = worst_reach >= 0.0 ? "the wrist (frame 4 origin) is " + mm(worst_reach) +
+                                              " from the shoulder, outside the arm's reach [" +
+                                              mm(reach_min) + ", " + mm(reach_max) + "]"
+                                        : singular_reach_message;
+    if (worst_reach >= 0.0 && nearest_singular_s5 <= kNearSingularWrist) {
+      result.message += "; the wrist is nearly singular (|sin q5| = " +
+                        format_general(nearest_singular_s5, 2) +
+                        "), where q6, and with it the wrist, follows the last digits of the "
+                        "orientation: give it to more digits";
+    }
     return result;
   }
 

@@ -14,6 +14,7 @@
 #include "vrreg/io/json_text.hpp"
 #include "vrreg/kinematics/pose.hpp"
 #include "vrreg/kinematics/robots.hpp"
+#include "vrreg/robot_io/urdf_robot.hpp"
 
 namespace vrreg::io {
 namespace {
@@ -135,8 +136,16 @@ class RobotReader {
     require_object(value, path);
     allow_keys(value, path,
                {"a_m", "a_mm", "alpha_rad", "alpha_deg", "d_m", "d_mm", "theta_offset_rad",
-                "theta_offset_deg"});
+                "theta_offset_deg", "joint"});
     DhRow row;
+    if (value.contains("joint")) {
+      const json& joint = value.at("joint");
+      if (joint != "revolute" && joint != "prismatic") {
+        fail(join(path, "joint"), "expected \"revolute\" or \"prismatic\", got " +
+                                      quote_value(joint));
+      }
+      if (joint == "prismatic") row.type = kinematics::JointType::kPrismatic;
+    }
     const auto required = [&](const std::string& base, bool angle) {
       const std::optional<double> v = unit_number(value, path, base, angle);
       if (!v) {
@@ -152,7 +161,9 @@ class RobotReader {
     return row;
   }
 
-  std::vector<JointLimits> limits(const json& object, std::size_t n) const {
+  // Limits per row; a prismatic row's are metres under either key (degrees do not apply).
+  std::vector<JointLimits> limits(const json& object, const std::vector<DhRow>& rows) const {
+    const std::size_t n = rows.size();
     const bool rad = object.contains("joint_limits_rad"), deg = object.contains("joint_limits_deg");
     if (rad && deg) fail("joint_limits_deg", "give either joint_limits_rad or joint_limits_deg");
     if (!rad && !deg) return std::vector<JointLimits>(n);
@@ -166,7 +177,7 @@ class RobotReader {
       const std::string path = key + "[" + std::to_string(i) + "]";
       const std::vector<double> pair = numbers(list[i], path, 2);
       JointLimits l{pair[0], pair[1]};
-      if (deg) l = {units::deg_to_rad(pair[0]), units::deg_to_rad(pair[1])};
+      if (deg && !rows[i].prismatic()) l = {units::deg_to_rad(pair[0]), units::deg_to_rad(pair[1])};
       if (!(l.lower_rad < l.upper_rad)) fail(path, "lower limit must be below upper limit");
       out.push_back(l);
     }
@@ -178,14 +189,66 @@ class RobotReader {
   std::string source_;
 };
 
+// A declared "family" must be the one the chain has.
+void check_family(const RobotReader& r, const json& root, const kinematics::SerialChain& chain) {
+  if (!root.contains("family")) return;
+  const json& family = root.at("family");
+  if (!family.is_string() || (family != "ur" && family != "lwr" && family != "generic")) {
+    r.fail("family", "expected \"ur\", \"lwr\" or \"generic\", got " + quote_value(family));
+  }
+  if (family.get<std::string>() != kinematics::to_string(chain.family())) {
+    r.fail("family", "declared " + quote_value(family) + " but the DH table has the structure of " +
+                         kinematics::to_string(chain.family()) +
+                         " (see the analytic IK headers for the required twists and offsets)");
+  }
+}
+
+std::string string_value(const RobotReader& r, const json& root, const std::string& key) {
+  if (!root.at(key).is_string() || root.at(key).get<std::string>().empty()) {
+    r.fail(key, "expected a non-empty string");
+  }
+  return root.at(key).get<std::string>();
+}
+
+// A robot file that names a URDF: its chain from base_link to tip_link, with the file's tool
+// (in the tip link's frame) and base (the base link's frame in the robot frame) on top.
+kinematics::SerialChain urdf_chain(const RobotReader& r, const json& root,
+                                   const std::string& source) {
+  for (const char* key : {"dh", "joint_limits_rad", "joint_limits_deg"}) {
+    if (root.contains(key)) r.fail(key, "give either \"urdf\" or a DH table, not both");
+  }
+  std::filesystem::path urdf = string_value(r, root, "urdf");
+  if (urdf.is_relative()) urdf = std::filesystem::path(source).parent_path() / urdf;
+  UrdfChainOptions options;
+  if (root.contains("base_link")) options.base_link = string_value(r, root, "base_link");
+  if (root.contains("tip_link")) options.tip_link = string_value(r, root, "tip_link");
+  kinematics::SerialChain chain = read_urdf_robot(urdf.string(), options);
+  if (root.contains("tool")) {
+    chain = chain.with_tool(chain.T_flange_tcp() * r.transform(root.at("tool"), "tool"));
+  }
+  if (root.contains("base")) {
+    chain = chain.with_base(r.transform(root.at("base"), "base") * chain.T_base_dh0());
+  }
+  return chain;
+}
+
 kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std::string& source) {
   const RobotReader r(doc, source);
   const json& root = doc.root;
   if (root.is_null()) r.fail("", "empty robot file (expected a DH table under \"dh\")");
   r.require_object(root, "");
-  r.allow_keys(
-      root, "",
-      {"format", "name", "family", "dh", "joint_limits_rad", "joint_limits_deg", "tool", "base"});
+  r.allow_keys(root, "",
+               {"format", "name", "family", "dh", "joint_limits_rad", "joint_limits_deg", "tool",
+                "base", "urdf", "base_link", "tip_link"});
+  if (root.contains("urdf")) {
+    kinematics::SerialChain chain = urdf_chain(r, root, source);
+    if (root.contains("name")) chain = chain.with_name(string_value(r, root, "name"));
+    check_family(r, root, chain);
+    return chain;
+  }
+  for (const char* key : {"base_link", "tip_link"}) {
+    if (root.contains(key)) r.fail(key, "goes with \"urdf\"");
+  }
   if (root.contains("format") && root.at("format") != "vrreg-robot") {
     r.fail("format", "expected \"vrreg-robot\", got " + quote_value(root.at("format")));
   }
@@ -207,25 +270,14 @@ kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std:
   for (std::size_t i = 0; i < dh.size(); ++i) {
     rows.push_back(r.dh_row(dh[i], "dh[" + std::to_string(i) + "]"));
   }
-  std::vector<JointLimits> limits = r.limits(root, rows.size());
+  std::vector<JointLimits> limits = r.limits(root, rows);
   const Eigen::Isometry3d tool =
       root.contains("tool") ? r.transform(root.at("tool"), "tool") : Eigen::Isometry3d::Identity();
   const Eigen::Isometry3d base =
       root.contains("base") ? r.transform(root.at("base"), "base") : Eigen::Isometry3d::Identity();
   try {
     kinematics::SerialChain chain(name, std::move(rows), std::move(limits), base, tool);
-    if (root.contains("family")) {
-      const json& family = root.at("family");
-      if (!family.is_string() || (family != "ur" && family != "lwr" && family != "generic")) {
-        r.fail("family", "expected \"ur\", \"lwr\" or \"generic\", got " + quote_value(family));
-      }
-      if (family.get<std::string>() != kinematics::to_string(chain.family())) {
-        r.fail("family", "declared " + quote_value(family) +
-                             " but the DH table has the structure of " +
-                             kinematics::to_string(chain.family()) +
-                             " (see the analytic IK headers for the required twists and offsets)");
-      }
-    }
+    check_family(r, root, chain);
     return chain;
   } catch (const FileError&) {
     throw;
@@ -261,6 +313,10 @@ kinematics::SerialChain read_robot_file(const std::string& path) {
   const std::string text = read_input_file(path);
   std::string lower = path;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (ends_with(lower, ".urdf") || (first != std::string::npos && text[first] == '<')) {
+    return parse_urdf_robot(text, path);
+  }
   RobotFileSyntax syntax = RobotFileSyntax::kAuto;
   if (ends_with(lower, ".json")) syntax = RobotFileSyntax::kJson;
   if (ends_with(lower, ".yaml") || ends_with(lower, ".yml")) syntax = RobotFileSyntax::kYaml;

@@ -21,8 +21,10 @@ struct CliRun {
   std::string out;  // stdout and stderr
 };
 
-CliRun run(const std::string& args) {
-  const std::string command = std::string(VRREG_CLI_PATH) + " " + args + " 2>&1";
+// stdout and stderr together, or stdout alone (`with_stderr` false: stderr is dropped).
+CliRun run(const std::string& args, bool with_stderr = true) {
+  const std::string command =
+      std::string(VRREG_CLI_PATH) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
   CliRun r;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return r;
@@ -57,7 +59,11 @@ void expect_round_trip(const std::string& robot, const std::string& pose_args,
                        std::size_t expected_solutions) {
   const nlohmann::json ik = run_json("ik " + robot + " " + pose_args);
   ASSERT_EQ(ik["status"], "ok") << ik.dump(2);
-  ASSERT_EQ(ik["solutions"].size(), expected_solutions) << ik.dump(2);
+  // expected_solutions 0: any number but none.
+  if (expected_solutions > 0) {
+    ASSERT_EQ(ik["solutions"].size(), expected_solutions) << ik.dump(2);
+  }
+  ASSERT_FALSE(ik["solutions"].empty()) << ik.dump(2);
   const nlohmann::json& target = ik["target"];
   for (const auto& solution : ik["solutions"]) {
     ASSERT_TRUE(solution.contains("config"));
@@ -88,7 +94,9 @@ TEST(KinematicsCli, Lwr4IkListsEveryConfigurationAtAnArmAngle) {
       "--xyz-mm 46.077925 -204.444075 934.150094 --rpy-deg 81.449652 5.544838 90.544813";
   expect_round_trip("lwr4", pose + " --psi-deg 94.4", 8);
   expect_round_trip("lwr4", pose + " --psi-deg 100", 4);
-  const nlohmann::json none = run_json("ik lwr4 " + pose + " --psi-deg -80");
+  const CliRun refused = run("ik --json lwr4 " + pose + " --psi-deg -80", false);
+  EXPECT_EQ(refused.status, 3);
+  const nlohmann::json none = nlohmann::json::parse(refused.out);
   EXPECT_EQ(none["status"], "outside-limits");
   EXPECT_EQ(none["n_outside_limits"], 8);
 }
@@ -133,11 +141,52 @@ TEST(KinematicsCli, ControllerStyleSingleSolution) {
   EXPECT_EQ(ik["solutions"][0]["config"], "shoulder-left/elbow-up/wrist-flip");
 }
 
-TEST(KinematicsCli, UnreachablePoseIsAnAnswerNotAnError) {
-  const nlohmann::json ik = run_json("ik ur5 --xyz-mm 3000 0 0 --rpy-deg 0 0 0");
+TEST(KinematicsCli, NoSolutionIsAnAnswerWithExitStatusThree) {
+  const CliRun json = run("ik --json ur5 --xyz-mm 3000 0 0 --rpy-deg 0 0 0", false);
+  EXPECT_EQ(json.status, 3) << json.out;
+  const nlohmann::json ik = nlohmann::json::parse(json.out);
   EXPECT_EQ(ik["status"], "unreachable");
   EXPECT_TRUE(ik["solutions"].empty());
   EXPECT_FALSE(ik["message"].get<std::string>().empty());
+  const CliRun human = run("ik ur5 --xyz-mm 3000 0 0 --rpy-deg 0 0 0");
+  EXPECT_EQ(human.status, 3) << human.out;
+  EXPECT_NE(human.out.find("  no solution (unreachable): "), std::string::npos) << human.out;
+  EXPECT_NE(human.out.find("\nvrreg: ik: no solution (unreachable): "), std::string::npos)
+      << human.out;
+}
+
+// fk's own "back to joints" line at the UR wrist singularity (q5 = 0) inverts.
+TEST(KinematicsCli, IkInvertsFkAtTheWristSingularity) {
+  const CliRun fk = run("fk ur5 -- 1.33 -0.31 0.81 -1.63 0 1.06");
+  ASSERT_EQ(fk.status, 0) << fk.out;
+  const std::string marker = "back to joints:   vrreg ";
+  const std::size_t at = fk.out.find(marker);
+  ASSERT_NE(at, std::string::npos) << fk.out;
+  const std::string command =
+      fk.out.substr(at + marker.size(), fk.out.find('\n', at) - at - marker.size());
+  const CliRun ik = run(command);
+  EXPECT_EQ(ik.status, 0) << command << "\n" << ik.out;
+  EXPECT_NE(ik.out.find("singular: wrist"), std::string::npos) << ik.out;
+  expect_round_trip("ur5", command.substr(command.find("--xyz-mm")), 0);
+  // The same pose rounded to 6 decimals: q6 now follows the rounding, which puts the wrist out of
+  // reach; the refusal says why.
+  const CliRun rounded =
+      run("ik ur5 --xyz-mm -13.100067 -856.153506 -9.629098 --rpy-deg 90 4.010705 76.203387");
+  EXPECT_EQ(rounded.status, 3) << rounded.out;
+  EXPECT_NE(rounded.out.find("the wrist is nearly singular"), std::string::npos) << rounded.out;
+}
+
+// A URDF robot with a prismatic joint: fk, then every ik solution back through fk; the slide is
+// shown in mm.
+TEST(KinematicsCli, UrdfArmOnALinearAxis) {
+  const std::string rail = std::string(VRREG_TEST_DATA_DIR) + "/urdf/ur5_on_rail.urdf";
+  const nlohmann::json fk = run_json("fk " + rail + " -- 0.7 0.3 -1.2 1.4 -1.7 -1.5 0.2");
+  EXPECT_NEAR(fk["q_deg"][0].get<double>(), 700.0, 1e-9);
+  expect_round_trip(rail,
+                    "--xyz-mm" + numbers(fk["xyz_mm"]) + " --rpy-deg" + numbers(fk["rpy_deg"]), 0);
+  const CliRun human = run("fk --deg " + rail + " -- 700 0 0 0 0 0 0");
+  EXPECT_EQ(human.status, 0) << human.out;
+  EXPECT_NE(human.out.find("(q1 in mm: prismatic)"), std::string::npos) << human.out;
 }
 
 TEST(KinematicsCli, BadInputIsOneLineAndExitStatusOne) {

@@ -24,7 +24,8 @@ struct Case {
 
 const Case kCases[] = {
     {"measurement_csv", measurement_csv}, {"model_json", model_json}, {"robot_file", robot_file},
-    {"error_model", error_model},         {"plan_csv", plan_csv},     {"parts_csv", parts_csv}};
+    {"error_model", error_model},         {"plan_csv", plan_csv},     {"parts_csv", parts_csv},
+    {"urdf", urdf}};
 
 std::vector<fs::path> inputs_of(const std::string& name) {
   std::vector<fs::path> out;

@@ -57,6 +57,7 @@ int robot_file(const std::uint8_t* data, std::size_t size);
 int error_model(const std::uint8_t* data, std::size_t size);
 int plan_csv(const std::uint8_t* data, std::size_t size);
 int parts_csv(const std::uint8_t* data, std::size_t size);
+int urdf(const std::uint8_t* data, std::size_t size);
 
 }  // namespace vrreg::fuzz
 

@@ -7,6 +7,7 @@
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/configuration_label.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/inverse_kinematics.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
 #include "vrreg/kinematics/robots.hpp"
@@ -105,8 +106,24 @@ TEST(InverseKinematics, DispatchesByFamily) {
   std::vector<DhRow> rows = ur5().rows();
   rows[0].a_m = 0.05;
   const SerialChain generic("generic", rows, ur5().limits());
-  EXPECT_THROW(inverse_kinematics(generic, t), InputError);
-  EXPECT_FALSE(configuration_of(generic, Eigen::VectorXd::Zero(6)));
+  // A generic chain gets the numerical IK, and labels from the signs of its branch joints.
+  JointVector q(6);
+  q << 0.3, -1.1, 1.2, -0.7, 0.9, 0.2;
+  const IkResult r = inverse_kinematics(generic, forward_kinematics(generic, q));
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_EQ(r.solutions.front().config.kind(), ArmKind::kGeneric);
+  EXPECT_EQ(configuration_of(generic, q)->to_string(), "q3+,q5+");
+}
+
+TEST(ConfigurationLabel, GenericLabelsPrintAndParse) {
+  const ConfigurationLabel l = ConfigurationLabel::generic(0b10100, 0b10000);
+  EXPECT_EQ(l.to_string(), "q3+,q5-");
+  EXPECT_EQ(l.index(), 2);
+  EXPECT_EQ(ConfigurationLabel::parse("q3+,q5-"), l);
+  EXPECT_EQ(ConfigurationLabel::parse("single-class"), ConfigurationLabel::generic(0, 0));
+  for (const char* bad : {"q3+,", "q0+", "q3", "q3+,q3-", "q17+", "x3+"}) {
+    EXPECT_THROW(ConfigurationLabel::parse(bad), InputError) << bad;
+  }
 }
 
 }  // namespace

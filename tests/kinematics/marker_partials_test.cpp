@@ -16,7 +16,7 @@ using testing::marker_at;
 SerialChain with_row_delta(const SerialChain& c, int i, int which, double h) {
   std::vector<DhRow> rows = c.rows();
   DhRow& r = rows[static_cast<std::size_t>(i)];
-  (which == 0 ? r.a_m : which == 1 ? r.d_m : r.alpha_rad) += h;
+  (which == 0 ? r.a_m : which == 1 ? r.d_m : which == 2 ? r.alpha_rad : r.theta_offset_rad) += h;
   return SerialChain(c.name(), rows, c.limits(), c.T_base_dh0(), c.T_flange_tcp());
 }
 
@@ -36,8 +36,8 @@ void expect_partials_match(const SerialChain& chain, std::uint64_t seed) {
       qm(i) -= kH;
       const Eigen::Vector3d fd = (marker_at(chain, qp, p) - marker_at(chain, qm, p)) / (2 * kH);
       EXPECT_LT((fd - d.d_joint.col(i)).norm(), kTol) << "joint " << i;
-      const Eigen::Matrix3Xd* cols[3] = {&d.d_a, &d.d_d, &d.d_alpha};
-      for (int which = 0; which < 3; ++which) {
+      const Eigen::Matrix3Xd* cols[4] = {&d.d_a, &d.d_d, &d.d_alpha, &d.d_theta};
+      for (int which = 0; which < 4; ++which) {
         const Eigen::Vector3d fd_dh = (marker_at(with_row_delta(chain, i, which, kH), q, p) -
                                        marker_at(with_row_delta(chain, i, which, -kH), q, p)) /
                                       (2 * kH);
@@ -54,6 +54,16 @@ void expect_partials_match(const SerialChain& chain, std::uint64_t seed) {
 }
 
 TEST(MarkerPartials, Ur5MatchesFiniteDifferences) { expect_partials_match(ur5(), 3); }
+
+TEST(MarkerPartials, PrismaticJointsMatchFiniteDifferences) {
+  // A UR5 whose first and fourth joints slide (along z0, z3) instead of turning.
+  std::vector<DhRow> rows = ur5().rows();
+  rows[0].type = JointType::kPrismatic;
+  rows[3].type = JointType::kPrismatic;
+  std::vector<JointLimits> limits = ur5().limits();
+  limits[0] = limits[3] = {-0.5, 0.5};
+  expect_partials_match(SerialChain("sliding", rows, limits), 5);
+}
 
 TEST(MarkerPartials, Lwr4WithBaseTransformMatchesFiniteDifferences) {
   Eigen::Isometry3d base = testing::pose_from({0.1, -0.2, 0.3}, 0.2, -0.1, 0.7);

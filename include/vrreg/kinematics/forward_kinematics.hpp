@@ -9,10 +9,12 @@
 
 namespace vrreg::kinematics {
 
-/// 6 x n geometric Jacobian: rows 0-2 linear velocity [m/rad], rows 3-5 angular [rad/rad].
+/// 6 x n geometric Jacobian: rows 0-2 linear velocity [m/rad], rows 3-5 angular [rad/rad]
+/// (a prismatic joint's column: [m/m] and 0).
 using Jacobian = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, kMaxJoints>;
 
-/// T_base_tcp: the TCP pose in the robot base frame at joints `q_rad` [rad]; translation in m.
+/// T_base_tcp: the TCP pose in the robot base frame at joints `q_rad` [rad; m for a prismatic
+/// joint]; translation in m.
 Eigen::Isometry3d forward_kinematics(const SerialChain& chain, const JointRef& q_rad);
 /// T_dh0_flange: the flange (last DH frame) in the DH base frame, ignoring base and tool.
 Eigen::Isometry3d flange_in_dh0(const SerialChain& chain, const JointRef& q_rad);

@@ -11,7 +11,8 @@
 namespace vrreg::kinematics {
 
 /// Every IK solution of `T_base_tcp` (base frame, m): UR chains ignore `psi_rad`; LWR chains
-/// need it (throws InputError when absent); generic chains throw InputError.
+/// need it (throws InputError when absent); generic chains get the numerical IK (numeric_ik.hpp,
+/// default settings, one solution per configuration class found).
 IkResult inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T_base_tcp,
                             std::optional<double> psi_rad = std::nullopt,
                             const IkOptions& options = {});
@@ -22,7 +23,7 @@ IkResult inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T
 IkResult nearest_solution(const SerialChain& chain, const IkResult& all,
                           const JointRef& q_current_rad, JointNorm norm = JointNorm::kL2);
 
-/// The configuration label of `q_rad` [rad]; empty for a generic chain.
+/// The configuration label of `q_rad` [rad] (a generic chain's: signs of its branch joints).
 std::optional<ConfigurationLabel> configuration_of(const SerialChain& chain, const JointRef& q_rad);
 
 }  // namespace vrreg::kinematics

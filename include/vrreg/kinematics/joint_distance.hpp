@@ -33,6 +33,8 @@ std::vector<int> order_by_distance(const Eigen::Ref<const Eigen::MatrixXd>& cand
 
 /// The 2 pi shift of each joint of `q_rad` that lies in the chain's limits and is nearest
 /// `reference_rad` (what a controller commands); empty if some joint has no shift in its limits.
+/// Prismatic joints are not shifted, only checked. (The distances above wrap every joint as an
+/// angle.)
 std::optional<JointVector> shift_nearest(const SerialChain& chain, const JointRef& q_rad,
                                          const JointRef& reference_rad);
 /// The 2 pi shift of each joint within the limits with the smallest |q|; empty if none fits.

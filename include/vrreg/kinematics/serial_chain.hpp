@@ -1,5 +1,6 @@
 #pragma once
-// An immutable serial chain of revolute joints: DH table, joint limits, base and tool transforms.
+// An immutable serial chain of revolute and prismatic joints: DH table, joint limits, base and tool
+// transforms (from a DH robot file, or from any URDF chain, see joint_chain.hpp).
 // Frames: "base" is the robot frame poses are given in, "dh0" the DH base frame, "flange" the last
 // DH frame, "tcp" the tool centre point (e.g. the centre of a tracked sphere).
 #include <Eigen/Geometry>
@@ -12,7 +13,7 @@
 
 namespace vrreg::kinematics {
 
-/// Range of one joint [rad], inclusive.
+/// Range of one joint [rad; m for a prismatic joint, in spite of the names], inclusive.
 struct JointLimits {
   double lower_rad = -2.0 * std::numbers::pi;
   double upper_rad = 2.0 * std::numbers::pi;

@@ -18,7 +18,13 @@ namespace vrreg::io {
 /// Syntax of a robot file.
 enum class RobotFileSyntax { kAuto, kJson, kYaml };
 
-/// Reads the robot file at `path` (YAML if it ends in .yaml/.yml, JSON if .json, else sniffed).
+//
+// Or a URDF's chain: {"urdf": "ur5.urdf", "base_link": "base", "tip_link": "tool0"} (the path
+// relative to the robot file; name, family, tool and base as above, on top of the URDF's).
+
+/// Reads the robot file at `path`: URDF if it ends in .urdf or starts with '<' (its chain from
+/// the root to the deepest leaf, urdf_robot.hpp), YAML if it ends in .yaml/.yml, JSON if .json,
+/// else sniffed.
 /// Throws FileError naming the file (and the line, where the syntax gives one).
 kinematics::SerialChain read_robot_file(const std::string& path);
 

@@ -1,0 +1,226 @@
+// URDF -> joint list -> DH chain. urdfdom parses the XML and links the tree (it refuses a link
+// with two parents, a missing link, a joint without limits where URDF requires them); it reports
+// why through console_bridge, which is captured here so that the error is one line naming the file.
+#include "vrreg/robot_io/urdf_robot.hpp"
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <Eigen/Geometry>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <set>
+#include <vector>
+
+#include "vrreg/core/check.hpp"
+#include "vrreg/core/file_error.hpp"
+#include "vrreg/io/input_file.hpp"
+#include "vrreg/kinematics/joint_chain.hpp"
+
+namespace vrreg::io {
+namespace {
+
+using kinematics::ChainJoint;
+using kinematics::JointType;
+
+// Keeps urdfdom's last error message instead of printing it.
+class CapturingHandler : public console_bridge::OutputHandler {
+ public:
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) last_error = text;
+  }
+  std::string last_error;
+};
+
+// console_bridge's handler is process-wide: one parse at a time.
+std::mutex& parse_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+urdf::ModelInterfaceSharedPtr parse_model(const std::string& xml, const std::string& source) {
+  const std::lock_guard<std::mutex> lock(parse_mutex());
+  CapturingHandler handler;
+  console_bridge::useOutputHandler(&handler);
+  urdf::ModelInterfaceSharedPtr model;
+  std::string thrown;
+  try {
+    model = urdf::parseURDF(xml);
+  } catch (const std::exception& e) {
+    thrown = e.what();
+  }
+  console_bridge::restorePreviousOutputHandler();
+  if (!model) {
+    std::string why = !thrown.empty() ? thrown : handler.last_error;
+    for (char& c : why) {
+      if (c == '\n' || c == '\r') c = ' ';
+    }
+    throw FileError(source, 0,
+                    "not a valid URDF (urdfdom: " + (why.empty() ? "no reason given" : why) + ")");
+  }
+  return model;
+}
+
+Eigen::Isometry3d isometry(const urdf::Pose& pose) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  const urdf::Rotation& r = pose.rotation;
+  t.linear() = Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
+  t.translation() << pose.position.x, pose.position.y, pose.position.z;
+  return t;
+}
+
+class ChainBuilder {
+ public:
+  ChainBuilder(const urdf::ModelInterface& model, std::string source)
+      : model_(model), source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& message) const { throw FileError(source_, 0, message); }
+
+  urdf::LinkConstSharedPtr link(const std::string& name, const char* role) const {
+    urdf::LinkConstSharedPtr l = model_.getLink(name);
+    if (!l) fail(std::string(role) + " link '" + name + "' is not in the URDF");
+    return l;
+  }
+
+  // Moving joints from the root down to `link`.
+  static int depth(urdf::LinkConstSharedPtr link) {
+    int n = 0;
+    for (; link && link->parent_joint; link = link->getParent()) {
+      if (link->parent_joint->type != urdf::Joint::FIXED) ++n;
+    }
+    return n;
+  }
+
+  urdf::LinkConstSharedPtr default_tip() const {
+    std::vector<urdf::LinkSharedPtr> links;
+    model_.getLinks(links);
+    int best = -1;
+    std::vector<std::string> tied;
+    for (const urdf::LinkSharedPtr& l : links) {
+      if (!l->child_joints.empty()) continue;
+      const int d = depth(l);
+      if (d > best) {
+        best = d;
+        tied.assign(1, l->name);
+      } else if (d == best) {
+        tied.push_back(l->name);
+      }
+    }
+    if (tied.size() != 1) {
+      std::string names;
+      for (const std::string& n : tied) names += (names.empty() ? "" : ", ") + n;
+      fail("several leaf links end " + std::to_string(best) + " moving joints from the root (" +
+           names + "): name the tip link");
+    }
+    return model_.getLink(tied.front());
+  }
+
+  ChainJoint moving_joint(const urdf::Joint& j, const Eigen::Isometry3d& origin) const {
+    ChainJoint c;
+    c.name = j.name;
+    c.T_parent_joint = origin;
+    c.axis = Eigen::Vector3d(j.axis.x, j.axis.y, j.axis.z);
+    if (j.mimic) fail("joint '" + j.name + "' mimics another joint: not supported on the chain");
+    if (j.type == urdf::Joint::CONTINUOUS) {
+      return c;  // revolute within the default +-360 deg: every angle has a turn inside
+    }
+    c.type = j.type == urdf::Joint::PRISMATIC ? JointType::kPrismatic : JointType::kRevolute;
+    if (!j.limits) fail("joint '" + j.name + "' has no <limit>");
+    c.limits = {j.limits->lower, j.limits->upper};
+    if (!(j.limits->lower < j.limits->upper)) {
+      fail("joint '" + j.name + "': lower limit " + std::to_string(j.limits->lower) +
+           " is not below upper limit " + std::to_string(j.limits->upper));
+    }
+    return c;
+  }
+
+  kinematics::SerialChain build(const UrdfChainOptions& options) const {
+    const urdf::LinkConstSharedPtr root = model_.getRoot();
+    if (!root) fail("the URDF has no root link");
+    const urdf::LinkConstSharedPtr tip =
+        options.tip_link.empty() ? default_tip() : link(options.tip_link, "tip");
+    const urdf::LinkConstSharedPtr base =
+        options.base_link.empty() ? root : link(options.base_link, "base");
+    // The tip's ancestors, tip first.
+    std::vector<urdf::LinkConstSharedPtr> up_from_tip;
+    std::set<std::string> on_tip_path;
+    for (urdf::LinkConstSharedPtr l = tip; l; l = l->getParent()) {
+      up_from_tip.push_back(l);
+      on_tip_path.insert(l->name);
+    }
+    // From the base up to the first ancestor of the tip: fixed joints only.
+    Eigen::Isometry3d T_common_base = Eigen::Isometry3d::Identity();
+    urdf::LinkConstSharedPtr common = base;
+    while (on_tip_path.count(common->name) == 0) {
+      const urdf::JointConstSharedPtr j = common->parent_joint;
+      if (j->type != urdf::Joint::FIXED) {
+        fail("base link '" + base->name + "' is not above tip link '" + tip->name +
+             "', and the way up from it passes moving joint '" + j->name + "'");
+      }
+      T_common_base = isometry(j->parent_to_joint_origin_transform) * T_common_base;
+      common = common->getParent();
+    }
+    // Down from the common link to the tip.
+    std::vector<ChainJoint> joints;
+    Eigen::Isometry3d pending = T_common_base.inverse(Eigen::Isometry);
+    bool below = false;
+    for (auto it = up_from_tip.rbegin(); it != up_from_tip.rend(); ++it) {
+      if (!below) {
+        below = (*it)->name == common->name;
+        continue;
+      }
+      const urdf::Joint& j = *(*it)->parent_joint;
+      const Eigen::Isometry3d origin = pending * isometry(j.parent_to_joint_origin_transform);
+      switch (j.type) {
+        case urdf::Joint::FIXED:
+          pending = origin;
+          break;
+        case urdf::Joint::REVOLUTE:
+        case urdf::Joint::CONTINUOUS:
+        case urdf::Joint::PRISMATIC:
+          joints.push_back(moving_joint(j, origin));
+          pending = Eigen::Isometry3d::Identity();
+          break;
+        default:
+          fail("joint '" + j.name +
+               "' is floating or planar: a chain takes revolute, continuous, prismatic and fixed "
+               "joints");
+      }
+    }
+    if (joints.empty()) {
+      fail("no moving joint between base link '" + base->name + "' and tip link '" + tip->name +
+           "'");
+    }
+    if (joints.size() > static_cast<std::size_t>(kinematics::kMaxJoints)) {
+      fail(std::to_string(joints.size()) + " moving joints between '" + base->name + "' and '" +
+           tip->name + "'; at most " + std::to_string(kinematics::kMaxJoints));
+    }
+    const std::string name = model_.getName().empty() ? "urdf" : model_.getName();
+    try {
+      return kinematics::chain_from_joints(name, joints, pending);
+    } catch (const FileError&) {
+      throw;
+    } catch (const InputError& e) {
+      fail(e.what());
+    }
+  }
+
+ private:
+  const urdf::ModelInterface& model_;
+  std::string source_;
+};
+
+}  // namespace
+
+kinematics::SerialChain parse_urdf_robot(const std::string& xml, const std::string& source,
+                                         const UrdfChainOptions& options) {
+  const urdf::ModelInterfaceSharedPtr model = parse_model(xml, source);
+  return ChainBuilder(*model, source).build(options);
+}
+
+kinematics::SerialChain read_urdf_robot(const std::string& path, const UrdfChainOptions& options) {
+  return parse_urdf_robot(read_input_file(path), path, options);
+}
+
+}  // namespace vrreg::io
