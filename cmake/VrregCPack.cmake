@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `cpack -G DEB` in the build directory (scripts/package.sh): one .deb with the command, the static
 # libraries, the headers, the CMake and pkg-config files and share/vrreg. Only install rules of
 # COMPONENT vrreg go in, so nothing a test, benchmark or example might install.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # vrreg_module(name DEPS ... [PRIVATE_DEPS ...]): library vrreg_<name> from src/<name>/*.cpp, public
 # headers in include/vrreg/<name>/. A module without sources yet is an INTERFACE library.
 # DEPS are linked PUBLIC; PRIVATE_DEPS only into the module (a static library still passes them

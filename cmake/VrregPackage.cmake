@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Installs the headers and the CMake and pkg-config package files; include after the last
 # vrreg_module() (each module installs and exports itself there). docs/install.md shows the use.
 include(CMakePackageConfigHelpers)

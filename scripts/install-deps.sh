@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs vrreg's build and test dependencies from Debian bookworm's packages, and the charting
 # library that `vrreg report` inlines (web/: `npm ci` from the npm registry, pinned by
 # web/package-lock.json). With --with-browser also Debian's Chromium, for the browser test; with

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds the release command and libraries and makes the Debian package (docs/install.md);
 # prints the .deb's path on stdout.
 set -euo pipefail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg ik: every analytic inverse-kinematics solution of a flange (or TCP) pose, each labelled
 // with its configuration; for the LWR 4+ at an arm angle psi, with the feasible psi ranges.
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg report: one self-contained HTML page (Plotly inlined, works offline) with the paper's
 // kinds of figures, either for a user's own cell (--model, --targets: evaluated as `evaluate`
 // does, with a verdict in words) or for the paper's experiments (--reproduce DIR).

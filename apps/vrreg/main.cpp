@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg: the command line. Parses, calls the library, writes through io. The only place that
 // catches exceptions and maps them to exit codes:
 //   0 success, 1 bad input or a failed computation (one line on stderr), 2 usage error.

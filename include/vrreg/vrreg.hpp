@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // vrreg's front door: register fiducials, evaluate on targets and correct points, each one call
 // (docs/library.md). The modules below it stay available under vrreg/<module>/.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Forward and inverse kinematics of the built-in arms (UR3/5/10/5e, KUKA LWR 4+): TCP = flange
 // unless a tool offset is given; every analytic IK solution with its configuration label.
 #include <pybind11/stl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg.Model: the registration model (what register builds, the model file holds, evaluate and
 // correct use), saved and loaded as the command line's JSON file (include/vrreg/io/model_json.hpp).
 #include "vrreg/pipeline/model.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The compiled part of `import vrreg` (python/vrreg/__init__.py re-exports it).
 #include "bindings.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The results of register / evaluate / correct as small classes: scalars in metres, per-point
 // arrays as read-only numpy views of the C++ result (no copy; the result stays alive with them).
 #include <pybind11/stl.h>

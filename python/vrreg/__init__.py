@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """vrreg: vision-robot registration that knows its own accuracy (TRE, NIST's RRBC correction).
 
 Positions are (N, 3) numpy arrays in METRES (sensor frame X, robot frame Y; Y ~ R X + tau, paper

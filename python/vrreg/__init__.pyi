@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Type stubs of the vrreg package (the compiled _vrreg re-exported). Lengths in metres, angles in
 # radians; positions are (N, 3) float64 arrays (any strides; float32 converted).
 from typing import Any, Optional, Sequence

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Markdown report and acceptance bands of the test-bed calibration (issue 4).
 #include <algorithm>
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/planning/strategy3_correction.hpp"
 
 #include <algorithm>

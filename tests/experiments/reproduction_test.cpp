@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The whole reproduction on the simulated test beds (a few seconds, also under the sanitizers): the
 // default seed meets every finding of the paper; the same seeds give the same bytes whatever the
 // number of threads; dataset B's sweep agrees with the calibration's figures.

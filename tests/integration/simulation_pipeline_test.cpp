@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Simulated test beds through the whole pipeline: measurement files, registration, Strategy 2 and
 // the calibration against the paper (issue 4).
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The installed package as a user sees it (ctest vrreg_package_consumer): installs BUILD_DIR into a
 # fresh prefix, then builds and runs tests/package/consumer against it with find_package(vrreg
 # CONFIG) and again with pkg-config, using the build's own compiler and generator.

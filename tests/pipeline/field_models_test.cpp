@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Field models through the front door (docs/field-models.md): the cross-validation that `auto`
 // uses is exact where the answer is known (affine fields, pure noise), chooses the lowest error
 // on the common fiducials, and the predicted uncertainty it gives is calibrated (Monte Carlo).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Point sets, rigid transforms and similarities. SI inside the library: metres, radians
 // (design.md 1).

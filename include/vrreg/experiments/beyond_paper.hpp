@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Beyond the paper (`vrreg reproduce --beyond`, docs/reproduction.md): on the simulated datasets,
 // the paper's RRBC row beside the field models (linear, trilinear, rbf, kriging, joint, auto),

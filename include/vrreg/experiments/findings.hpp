@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The paper's findings (sections 5.1, 5.2; issue 5's acceptance) checked on a reproduction:
 // gamma(A2) > gamma(A1); corrected RMS_T falls with d (Spearman >= 0.9, Figure 7); N_bad(d_min) <

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The paper's experiments end to end on the simulated test beds (`vrreg reproduce`): for one seed,
 // simulate UR5 datasets A1, A2, B and the KUKA grid and process them as sections 4.3 and 4.4 do,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A reproduction as a flat list of named numbers ("cells"), each named by its JSON pointer in
 // `vrreg reproduce --json` (e.g. "/table1/A1/cor_rms_t_mm", "/table2/3/gamma_percent"), so that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How well the robust check (RegisterOptions::robust, correction/outliers.hpp) finds a bad
 // fiducial on simulated UR5 A1 cells (issue 13): per seed, the clean cell, one fiducial displaced

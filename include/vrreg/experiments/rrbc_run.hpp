@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One pass of the paper's pipeline on measured locations (sections 4.3, 4.4): register the
 // fiducials (Eq. 2), rigid-body condition (Eq. 1), noise (Eq. 9), RRBC-correct the targets

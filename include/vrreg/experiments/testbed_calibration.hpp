@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Calibration of the simulated test beds against the paper (issue 4, design.md 5): simulate the
 // datasets for a list of seeds, run the paper's pipeline on each and compare the medians with

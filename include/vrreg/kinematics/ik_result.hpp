@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Options in, result out for every analytic IK solver. Unreachable poses and singular cases are
 // values in the result, never exceptions; bad caller input throws InputError (design.md 7).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A joint-space model of a robot's positioning error (issue 12), fitted to fiducials by linear
 // least squares through the robot's Jacobian, as in kinematic calibration (Mooring, Roth &

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Feasible arm angles of the KUKA LWR 4+ for one pose, per global configuration, under the joint
 // limits (the analytic counterpart of Faria et al. 2018). psi as defined in lwr_ik.hpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // An immutable serial chain of revolute joints: DH table, joint limits, base and tool transforms.
 // Frames: "base" is the robot frame poses are given in, "dh0" the DH base frame, "flange" the last

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How much RRBC helped: uncorrected vs corrected RMS_T, gamma, N_bad, Delta TRE (section 5.1).
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Arm configurations for a plan (paper section 6 with section 4.4): each part point is reached by
 // an IK solution of a fixed tool orientation, and each of its fiducials by the IK solution nearest

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Procedure 1, "where to measure" (paper section 6, Fig. 16): for M part points whose placement
 // varies within +-S, a cube of fiducials on a grid of spacing A around each (fiducial_grid.hpp),

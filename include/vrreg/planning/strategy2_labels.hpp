@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Strategy 2 of Procedure 2 (paper section 4.4) on a measurement set: every location (fiducial
 // and target) gets the label its configuration earns along the visiting path, so `--config N`

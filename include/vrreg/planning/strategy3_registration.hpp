@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Strategy 3 of Procedure 2 (paper section 4.4), registration half: one registration {R, tau}
 // for every arm configuration, from the 8 fiducials at the corners of the whole work volume, each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Registration with an unknown marker offset (robot-sensor hand-eye calibration): from flange
 // poses and the marker positions the sensor measured there, T_robot_sensor = {R, tau} and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Point-based rigid registration (paper Eq. 2): least squares via the SVD of the 3x3
 // cross-covariance, always a proper rotation, optional uniform scale.

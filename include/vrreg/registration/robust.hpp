@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Outlier-robust registration: finds fiducials that break the rigid-body condition grossly (a
 // swapped or mislabelled marker) and registers without them. For point sets without a correction

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The report of a user's own cell (issue 6; `vrreg report --model M --targets T`): the paper's
 // kinds of figures for their data (L histogram, TRE per target, RMS_T per configuration, the 3D

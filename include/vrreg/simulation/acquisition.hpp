@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Acquisition of a dataset on a simulated test bed (paper sections 4.1, 4.2): the controller
 // turns each nominal location into joints with the nominal model, the robot lands where its
