@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Usage errors are one line with exit status 2; an output that is a directory, FIFO or device is
 // refused before any work (before the inputs are even read); above 20 000 fiducials `register`
-// samples sigma_L and says so (issue 13).
+// samples sigma_L and says so.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// vrreg export (issue 11): every format parses back, with an independent reader, to the model's
+// vrreg export: every format parses back, with an independent reader, to the model's
 // transform and marker offset, and says which way the transform goes.
 #include "vrreg/robot_io/model_export.hpp"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How well the robust check (RegisterOptions::robust, correction/outliers.hpp) finds a bad
-// fiducial on simulated UR5 A1 cells (issue 13): per seed, the clean cell, one fiducial displaced
+// fiducial on simulated UR5 A1 cells: per seed, the clean cell, one fiducial displaced
 // by 1 mm and by 2 mm in a random direction, and two fiducials' sensor readings swapped; each
 // registered with and without --robust and evaluated on the cell's targets (RRBC, Eq. 6-8).
 #include <cstdint>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Calibration of the simulated test beds against the paper (issue 4, design.md 5): simulate the
+// Calibration of the simulated test beds against the paper (design.md 5): simulate the
 // datasets for a list of seeds, run the paper's pipeline on each and compare the medians with
 // the acceptance bands (UR5 Table 1 and section 5.1, KUKA Table 2 Strategy 1).
 #include <array>

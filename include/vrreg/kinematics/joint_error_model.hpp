@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
-// A joint-space model of a robot's positioning error (issue 12), fitted to fiducials by linear
+// A joint-space model of a robot's positioning error, fitted to fiducials by linear
 // least squares through the robot's Jacobian, as in kinematic calibration (Mooring, Roth &
 // Driels 1991; Hollerbach & Wampler 1996), extended by smooth per-joint angle-error functions
 // (Legendre polynomials over each joint's observed range) and a quadratic Cartesian trend.
