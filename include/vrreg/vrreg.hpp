@@ -6,6 +6,7 @@
 //   vrreg::MeasuredPoints fiducials;  // sensor_m and robot_m: 3 x N [m]
 //   const vrreg::RegisterResult r = vrreg::register_fiducials(fiducials);
 //   const vrreg::CorrectResult c = vrreg::correct(r.model, points);
+#include "vrreg/config.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
 #include "vrreg/core/types.hpp"

@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "vrreg/config.hpp"
+
 namespace vrreg {
 
 /// A set of 3D points, one column a point.
