@@ -17,8 +17,8 @@ namespace vrreg::experiments {
 /// What to run.
 struct CalibrationOptions {
   std::vector<std::uint64_t> seeds = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
-  std::optional<simulation::TestbedErrorModel> ur5_errors;   ///< empty: the test bed's defaults
-  std::optional<simulation::TestbedErrorModel> lwr4_errors;  ///< empty: the test bed's defaults
+  std::optional<simulation::TestbedErrorModel> ur5_errors{};   ///< empty: the test bed's defaults
+  std::optional<simulation::TestbedErrorModel> lwr4_errors{};  ///< empty: the test bed's defaults
   bool ur5 = true;
   bool lwr4 = true;
 };
@@ -47,8 +47,8 @@ struct Lwr4SeedFigures {
 
 /// Everything a calibration run produced.
 struct CalibrationReport {
-  std::vector<Ur5SeedFigures> ur5;
-  std::vector<Lwr4SeedFigures> lwr4;
+  std::vector<Ur5SeedFigures> ur5{};
+  std::vector<Lwr4SeedFigures> lwr4{};
 };
 
 /// Simulates A1, A2 and B of the UR5 test bed for `seed` and runs the pipeline on them.

@@ -16,7 +16,7 @@ namespace vrreg::planning {
 struct Strategy3Options {
   std::uint64_t seed = 1;  ///< seeds vrreg::Random, which picks each corner's configuration
   double match_tolerance_m = 1e-6;  ///< how far a fiducial may be from a corner position [m]
-  RegistrationOptions registration;
+  RegistrationOptions registration{};
   /// Throws InputError on a tolerance that is not > 0 or on bad registration options.
   void validate() const;
 };
