@@ -25,7 +25,7 @@ Eigen::Isometry3d pose_from(const py::object& pose) {
   const py::array_t<double, py::array::forcecast> a =
       py::array_t<double, py::array::forcecast>::ensure(pose);
   if (!a || a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4) {
-    throw py::value_error("pose: expected a (4, 4) homogeneous matrix (translation in metres)");
+    throw InputError("pose: expected a (4, 4) homogeneous matrix (translation in metres)");
   }
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   for (py::ssize_t r = 0; r < 3; ++r) {

@@ -9,6 +9,7 @@ problems vrreg.FileError with .path and .line). docs/python.md has the guide.
 import json as _json
 
 from ._vrreg import (
+    __version__,
     CorrectResult,
     EvaluateResult,
     FileError,
@@ -48,7 +49,7 @@ def reproduce(seed: int = 1, *, ur5: bool = True, lwr4: bool = True) -> dict:
 
 
 __all__ = [
-    "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
+    "__version__", "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
     "Plan", "RegisterResult", "RHO_THRESHOLD", "Simulation", "StencilStatus", "correct",
     "estimate_marker_offset", "evaluate", "fk", "ik", "improvement", "load_model", "model_from_json", "plan",
     "read_measurements", "register", "reproduce", "rho", "rigid_body_statistics", "robots",
