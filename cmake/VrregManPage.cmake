@@ -14,12 +14,14 @@ foreach(name IN LISTS names)
   execute_process(COMMAND ${VRREG} ${name} --help OUTPUT_VARIABLE command_help
                   COMMAND_ERROR_IS_FATAL ANY)
   # Each command's help as a literal block under its name (.nf keeps the columns).
+  # groff: a backslash is \e; a line starting with . or ' would be a request, \& stops that.
   string(REPLACE "\\" "\\e" command_help "${command_help}")
-  string(REGEX REPLACE "\n\\." "\n\\\\\\&." command_help "${command_help}")
+  string(REPLACE "\n." "\n\\&." command_help "${command_help}")
+  string(REPLACE "\n'" "\n\\&'" command_help "${command_help}")
   string(APPEND include ".SS ${name}\n.nf\n${command_help}.fi\n")
 endforeach()
-string(APPEND include "[SEE ALSO]\nThe guides in /usr/share/doc/vrreg and at the project's home; "
-       "`vrreg COMMAND --help` prints the same as above.\n")
+string(APPEND include "[SEE ALSO]\n`vrreg COMMAND --help` prints each command's part of this page. "
+       "The project's docs/ describe the method, the file formats and the library.\n")
 file(WRITE ${dir}/vrreg.h2m "${include}")
 execute_process(COMMAND ${HELP2MAN} --no-info --section=1
                         "--name=vision-robot registration with the RRBC correction"
