@@ -56,19 +56,20 @@ set(CPACK_DEBIAN_VRREG_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
 
-# Descriptions: a synopsis under 80 characters, then lines under 80 (Debian policy 3.4).
+# Descriptions: a synopsis under 80 characters, then lines under 80 (Debian policy 3.4), without
+# leading spaces and with an empty line between paragraphs: CPack indents them and writes the " .".
 set(vrreg_deb_about
-    " vrreg registers a vision system (camera, motion tracker) to a robot arm from\n"
-    " fiducials measured in both frames, reports the target registration error on\n"
-    " independent targets and corrects it with RRBC, the Restoration of the Rigid\n"
-    " Body Condition (NIST).\n")
+    "vrreg registers a vision system (camera, motion tracker) to a robot arm from\n"
+    "fiducials measured in both frames, reports the target registration error on\n"
+    "independent targets and corrects it with RRBC, the Restoration of the Rigid\n"
+    "Body Condition (NIST).\n")
 string(JOIN "" vrreg_deb_about ${vrreg_deb_about})
 set(CPACK_DEBIAN_VRREG_DESCRIPTION
-    "vision-robot registration that knows its own accuracy\n${vrreg_deb_about} .\n This package contains the vrreg command.")
+    "vision-robot registration that knows its own accuracy\n${vrreg_deb_about}\nThis package contains the vrreg command.")
 set(CPACK_DEBIAN_DEV_DESCRIPTION
-    "vision-robot registration library - development files\n${vrreg_deb_about} .\n This package contains the C++20 headers, the static libraries and the\n CMake (find_package(vrreg)) and pkg-config files.")
+    "vision-robot registration library - development files\n${vrreg_deb_about}\nThis package contains the C++20 headers, the static libraries and the CMake\n(find_package(vrreg)) and pkg-config files.")
 set(CPACK_DEBIAN_PYTHON_DESCRIPTION
-    "vision-robot registration - Python 3 module\n${vrreg_deb_about} .\n This package contains the Python 3 module (import vrreg), numpy in and out.")
+    "vision-robot registration - Python 3 module\n${vrreg_deb_about}\nThis package contains the Python 3 module (import vrreg), numpy in and out.")
 
 # libvrreg-dev: the -dev packages whose headers the public headers include or whose libraries the
 # static libraries need (VRREG_DEB_DEV_DEPENDS, from cmake/VrregPackage.cmake).

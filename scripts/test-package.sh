@@ -37,7 +37,7 @@ names=$(for d in "${debs[@]}"; do dpkg-deb -f "$d" Package; done | sort | tr '\n
 for deb in "${debs[@]}"; do
   step "lintian ${deb##*/}"
   # --fail-on: errors and warnings fail; info and pedantic tags are printed only.
-  lintian --fail-on error,warning --no-tag-display-limit "$deb" || fail "lintian ${deb##*/}"
+  lintian --fail-on error,warning --tag-display-limit 0 "$deb" || fail "lintian ${deb##*/}"
   package=$(dpkg-deb -f "$deb" Package)
   dpkg-deb -c "$deb" >"$tmp/$package.list"
   grep -q "./usr/share/doc/$package/copyright$" "$tmp/$package.list" || fail "$package: no copyright"
