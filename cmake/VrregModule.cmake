@@ -34,7 +34,8 @@ function(vrreg_module name)
   # Eigen's alignment is part of the ABI (results allocated on one side are freed on the other):
   # the library and every user get the same value, whatever -m flags the user compiles with
   # (vrreg/config.hpp checks it; docs/install.md).
-  target_compile_definitions(${target} ${scope} EIGEN_MAX_ALIGN_BYTES=${VRREG_EIGEN_MAX_ALIGN_BYTES})
+  target_compile_definitions(${target} ${scope} EIGEN_MAX_ALIGN_BYTES=${VRREG_EIGEN_MAX_ALIGN_BYTES}
+                             EIGEN_MAX_STATIC_ALIGN_BYTES=${VRREG_EIGEN_MAX_STATIC_ALIGN_BYTES})
   target_link_libraries(${target} ${scope} ${ARG_DEPS})
   # The headers are C++20: users of the installed package need it too.
   target_compile_features(${target} ${scope} cxx_std_20)
