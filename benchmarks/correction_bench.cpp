@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // RRBC target corrections (Eq. 7, 8) per second for 10^6 targets: grid (trilinear), scattered
 // (Delaunay, barycentric) and octuplet, beside the peer a user might write instead: the 8 nearest
 // fiducials (kd-tree) with inverse-distance weights. Interpolator build times are separate.

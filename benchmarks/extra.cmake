@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Orocos KDL (Debian liborocos-kdl-dev) as the numeric-IK peer of the kinematics benchmarks.
 find_package(orocos_kdl REQUIRED)
 target_include_directories(vrreg_benchmarks SYSTEM PRIVATE ${orocos_kdl_INCLUDE_DIRS})

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Field models (kriging, RBF) fitted to the fiducials of A1 (1 167) and A2 (7 965) and
 // predicted at the targets: time of fit + predict, RMS against the true field, and the
 // calibration of kriging's predicted sd. The peers (scikit-learn GaussianProcessRegressor,

@@ -1,4 +1,5 @@
-// Marker-offset estimation (hand-eye registration, issue 11) beside OpenCV's
+// SPDX-License-Identifier: Apache-2.0
+// Marker-offset estimation (hand-eye registration) beside OpenCV's
 // calibrateRobotWorldHandEye (Shah and Li methods) on the same simulated rigid-body data: the
 // tracker reads the marker's full pose (position noise per axis, small orientation noise), the
 // robot's flange poses are exact. vrreg uses the positions only; OpenCV needs the orientations.

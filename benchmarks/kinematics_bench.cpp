@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Analytic IK (every solution) beside Orocos KDL's numeric IK (one solution per call, from a
 // fixed seed) on the same 1024 random reachable poses (joints uniform within the limits).
 // Counters: success_rate = fraction of poses solved (analytic: the sampled joints are among the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The robust check per fiducial set: leave-one-out prediction from neighbours
 // (detect_outlier_fiducials, correction/outliers.hpp) beside the check it replaced, residuals
 // against one rigid fit (register_rigid_robust), on a full n^3 lattice at 25 mm with a smooth

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Registration (Eq. 2) beside Eigen::umeyama (scaling off), and sigma_L (Eq. 1) over all pairs.
 #include <benchmark/benchmark.h>
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Installs the headers and the CMake and pkg-config package files; include after the last
 # vrreg_module() (each module installs and exports itself there). docs/install.md shows the use.
 include(CMakePackageConfigHelpers)
@@ -44,23 +45,25 @@ list(JOIN pc_requires ", " VRREG_PC_REQUIRES)
 set(VRREG_PC_LIBS "")
 foreach(module IN LISTS modules)
   get_target_property(type vrreg_${module} TYPE)
-  if(type STREQUAL "STATIC_LIBRARY")
+  if(type MATCHES "^(STATIC|SHARED)_LIBRARY$")
     set(VRREG_PC_LIBS "-lvrreg_${module} ${VRREG_PC_LIBS}")
   endif()
 endforeach()
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        COMPONENT vrreg)
+        COMPONENT dev)
+install(FILES ${PROJECT_BINARY_DIR}/include/vrreg/config.hpp
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/vrreg COMPONENT dev)
 
 set(cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/vrreg)
-install(EXPORT vrregTargets NAMESPACE vrreg:: DESTINATION ${cmake_dir} COMPONENT vrreg)
+install(EXPORT vrregTargets NAMESPACE vrreg:: DESTINATION ${cmake_dir} COMPONENT dev)
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/vrregConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/vrregConfig.cmake INSTALL_DESTINATION ${cmake_dir})
 # Before 1.0 a minor release may change the API, so only the same major.minor is compatible.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/vrregConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/vrregConfig.cmake ${PROJECT_BINARY_DIR}/vrregConfigVersion.cmake
-        DESTINATION ${cmake_dir} COMPONENT vrreg)
+        DESTINATION ${cmake_dir} COMPONENT dev)
 
 # vrreg.pc finds its prefix from its own place (${pcfiledir}), so an installed tree can move.
 file(RELATIVE_PATH VRREG_PC_PREFIX_FROM_PCFILEDIR ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig
@@ -69,4 +72,4 @@ string(REGEX REPLACE "/$" "" VRREG_PC_PREFIX_FROM_PCFILEDIR "${VRREG_PC_PREFIX_F
 string(STRIP "${VRREG_PC_LIBS}" VRREG_PC_LIBS)
 configure_file(${CMAKE_CURRENT_LIST_DIR}/vrreg.pc.in ${PROJECT_BINARY_DIR}/vrreg.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/vrreg.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
-        COMPONENT vrreg)
+        COMPONENT dev)

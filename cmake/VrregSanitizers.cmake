@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # One switch for ASan + UBSan on everything we build (design.md section 7).
 #
 # UBSan's null, alignment and object-size checks are left out: they instrument every Eigen

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Warnings as errors on our own targets only (never on third-party headers: those are SYSTEM).
 # -Wno-restrict: GCC 12 reports false positives inside std::string at -O3 (GCC bug 105329).
 function(vrreg_set_warnings target)

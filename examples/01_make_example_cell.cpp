@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Example 1: make a small measurement file for a simulated cell, with the library's own pieces.
 //
 //   build/release/examples/example_01_make_example_cell [SEED] [OUT.csv]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Example 2: register a cell and measure how accurate the registration really is, with RRBC.
 //
 //   build/release/examples/example_02_register_and_evaluate [CELL.csv] [CUBE_MM]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Example 3: the library's front door on your own arrays — no files, no internal types.
 //
 //   build/release/examples/example_03_front_door

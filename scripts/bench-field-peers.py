@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """vrreg's field models beside the peers a user would pick, on the same data.
 
 Runs the vrreg benchmark binary (BM_FieldKriging, BM_FieldRbf) with VRREG_FIELD_DATA_DIR set,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Configures and builds one CMake preset (default: release). Further arguments name the targets
 # to build (default: all of them, tests and benchmarks included).
 set -euo pipefail

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Where the 27-fiducial cube's error comes from (issue 12, docs/reproduction.md): the simulated
+# SPDX-License-Identifier: Apache-2.0
+# Where the 27-fiducial cube's error comes from (docs/reproduction.md): the simulated
 # UR5's A1 data with one group of its errors switched off at a time (`vrreg simulate --errors`),
 # cut to the cube (the 3 x 3 x 3 even nodes around p04_06_04, 50 mm apart, and the 8 targets
 # inside), corrected by octuplet RRBC and by kriging; medians over the seeds of RMS_T, mm.

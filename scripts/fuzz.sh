@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Fuzzes the file readers with libFuzzer under ASan + UBSan (tests/fuzz/, docs/file-formats.md):
 #   scripts/fuzz.sh [SECONDS_PER_HARNESS] [HARNESS...]     (default: 60 s each, every harness)
 # Builds the `fuzz` preset (clang; `scripts/install-deps.sh --with-fuzz` installs it), then runs

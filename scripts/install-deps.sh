@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs vrreg's build and test dependencies from Debian bookworm's packages, and the charting
 # library that `vrreg report` inlines (web/: `npm ci` from the npm registry, pinned by
 # web/package-lock.json). With --with-browser also Debian's Chromium, for the browser test; with
@@ -31,9 +32,14 @@ packages=(
   # marker-offset estimate (benchmarks/hand_eye_bench.cpp, docs/benchmarks.md)
   libopencv-calib3d-dev
   file dpkg-dev  # cpack -G DEB: dpkg-shlibdeps computes the .deb's Depends (scripts/package.sh)
+  help2man  # the manual page vrreg(1), from --help
+  lintian   # the packages' check (scripts/test-package.sh)
   # The Python module (python/, docs/python.md) for Debian's /usr/bin/python3, its tests and
   # python/benchmarks/bench.py (scipy peers).
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-scipy
+  # pip install . (pyproject.toml, setup.py) offline with Debian's build tools, into a venv; mypy's
+  # stubtest and mypy --strict check the type stubs and the Python examples.
+  python3-setuptools python3-wheel python3-pip python3-venv python3-mypy
 )
 # Node.js and npm: the machine's own when there (any Node >= 18), else Debian's.
 if ! command -v node >/dev/null 2>&1; then packages+=(nodejs); fi

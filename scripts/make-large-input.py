@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes a large measurement CSV (design.md 6) for scale checks, without committing big data.
 
   scripts/make-large-input.py --fiducials 100000 --targets 0 -o /tmp/f.csv

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# Builds the release command and libraries and makes the Debian package (docs/install.md);
-# prints the .deb's path on stdout.
+# SPDX-License-Identifier: Apache-2.0
+# Builds the Debian packages vrreg, libvrreg-dev and python3-vrreg (docs/install.md) in
+# build/package (preset `package`: release, no tests, prefix /usr so that the libraries go to the
+# multiarch directory) and prints their paths on stdout.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-cmake --preset release >/dev/null
-# The command links every module library, so this builds everything the package installs.
-cmake --build --preset release --target vrreg_cli >&2
-(cd build/release && cpack -G DEB) >&2
-deb=$(ls -t build/release/vrreg_*.deb | head -n 1)
-realpath "$deb"
+cmake --preset package >/dev/null
+# Everything the preset builds is installed: the command, the libraries, the Python module, the
+# manual page and the changelog.
+cmake --build --preset package >&2
+rm -f build/package/*.deb
+(cd build/package && cpack -G DEB) >&2
+realpath build/package/*.deb

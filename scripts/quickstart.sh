@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Quick start, command 1: install, build, run the main jobs.
 # 1. register -> evaluate -> correct on the example cell that the repo ships
 #    (examples/data/example-cell.csv, made by build/release/examples/example_01_make_example_cell);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Small helpers shared by the commands: millimetre formatting, option parsing glue.
 #include <CLI/CLI.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg calibrate-testbeds: simulate the paper's datasets for a range of seeds, run the pipeline
 // and compare the medians with the acceptance bands (docs/testbed-calibration.md).
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg export: a model's T_robot_sensor (and marker offset) in the formats cells use: YAML
 // (easy_handeye style, x y z qx qy qz qw in metres), a URDF fixed joint, or JSON with a 4x4 matrix.
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg fk: forward kinematics of a robot (built-in or robot file) at given joint values:
 // the flange / TCP pose, its configuration label and, for the LWR 4+, the arm angle psi.
 #include <cstdio>

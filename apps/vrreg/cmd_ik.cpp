@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg ik: every inverse-kinematics solution of a flange (or TCP) pose, each labelled with its
 // configuration (closed form for UR and LWR 4+ chains, at an arm angle psi with the feasible psi
 // ranges for the LWR; numerical for any other chain). No solution: the answer, then exit 3.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg plan: Procedure 1, "where to measure" (paper section 6, Fig. 16). For each part point a
 // cube of fiducials on a grid (placement tolerance +-S, spacing A), the d_min > 2.5 sigma_noise
 // check (Eq. 9), joints for every location nearest its part point's, and a visiting order; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg report: one self-contained HTML page (Plotly inlined, works offline) with the paper's
 // kinds of figures, either for a user's own cell (--model, --targets: evaluated as `evaluate`
 // does, with a verdict in words) or for the paper's experiments (--reproduce DIR).
@@ -11,7 +12,7 @@
 #include "strategy_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
-#include "vrreg/io/measurement_csv.hpp"
+#include "measurement_input.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/io/plan_csv.hpp"
 #include "vrreg/report/cell_report.hpp"
@@ -43,7 +44,7 @@ report::ReportPage cell_page(const ReportArgs& args) {
   apply_evaluate_flags(args.strategy, options);
   EvaluateResult evaluation;
   naming_file(args.model, [&] {
-    evaluation = evaluate(model, io::read_measurement_csv(args.targets), options);
+    evaluation = evaluate(model, read_measurements(args.targets), options);
   });
   std::optional<double> sigma_rep;
   if (args.sigma_rep_mm) sigma_rep = units::mm_to_m(*args.sigma_rep_mm);

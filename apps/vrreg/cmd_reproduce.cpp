@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg reproduce: the paper's experiments end to end on the simulated test beds. Simulates UR5
 // datasets A1, A2, B and the KUKA LWR 4+ grid for one seed (or K seeds, in parallel), processes
 // them as sections 4.3 and 4.4 do, prints Tables 1-2 and the Figure 7-8 data beside the paper's

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg robust-study: how often `register --robust` finds a displaced or swapped fiducial, and how
-// often it rejects a good one, on simulated UR5 A1 cells (issue 13; docs/outliers.md).
+// often it rejects a good one, on simulated UR5 A1 cells (docs/outliers.md).
 #include <cstdio>
 #include <memory>
 

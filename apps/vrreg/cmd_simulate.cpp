@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg simulate: the paper's datasets acquired on a simulated test bed (UR5: A1, A2, B; KUKA
 // LWR 4+: grid), or a plan of `vrreg plan` measured on it (--plan), written as a measurement CSV.
 // Same seed, same bytes.

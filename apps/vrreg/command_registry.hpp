@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Each command lives in its own cmd_<name>.cpp and registers itself here, so adding a command
 // touches no other file. `order` fixes the position in --help.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg: the command line. Parses, calls the library, writes through io. The only place that
 // catches exceptions and maps them to exit codes:
 //   0 success, 1 bad input or a failed computation (one line on stderr), 2 usage error,
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "command_registry.hpp"
+#include "vrreg/config.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/io/atomic_write.hpp"
 
@@ -30,11 +32,24 @@ int main(int argc, char** argv) {
       "Condition (RRBC).\nLengths are printed in mm. Run 'vrreg COMMAND --help' for a command.",
       "vrreg"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "vrreg 0.1.0");
+  app.set_version_flag("--version", "vrreg " VRREG_VERSION_STRING);
   auto& registry = vrreg::cli::command_registry();
   std::stable_sort(registry.begin(), registry.end(),
                    [](const auto& a, const auto& b) { return a.order < b.order; });
   for (const auto& entry : registry) entry.setup(app);
+
+  // CLI11 would answer `vrreg serve --help` with the main help and exit 0, as if `serve` were an
+  // argument of --help: a word before any command that names no command is a usage error.
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.empty() || word[0] == '-') continue;
+    const auto named = [&word](CLI::App* command) { return command->check_name(word); };
+    if (app.get_subcommands(named).empty()) {
+      std::cerr << "vrreg: usage error: unknown command '" << word << "' (see vrreg --help)\n";
+      return 2;
+    }
+    break;
+  }
 
   try {
     app.parse(argc, argv);

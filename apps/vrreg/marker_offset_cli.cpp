@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "marker_offset_cli.hpp"
 
 #include <cstdio>
@@ -7,7 +8,7 @@
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
-#include "vrreg/io/measurement_csv.hpp"
+#include "measurement_input.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/pipeline/marker_offset.hpp"
 
@@ -64,11 +65,11 @@ void run_register_with_marker_offset(const std::string& fiducials_path,
   if (known) check_finite(flags.known_mm, "--marker-offset-mm");
   const MarkerOffsetRegisterResult result =
       known ? register_with_known_marker_offset(
-                  io::read_measurement_csv(fiducials_path), robot,
+                  read_measurements(fiducials_path), robot,
                   units::mm_to_m(1.0) *
                       Eigen::Vector3d(flags.known_mm[0], flags.known_mm[1], flags.known_mm[2]),
                   options)
-            : register_with_marker_offset(io::read_measurement_csv(fiducials_path), robot, options,
+            : register_with_marker_offset(read_measurements(fiducials_path), robot, options,
                                           estimation);
   const MarkerOffsetResult& e = result.estimate;
   if (!result.ok()) throw io::FileError(fiducials_path, 0, e.message);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `vrreg register --estimate-marker-offset --robot ROBOT`: hand-eye registration (the marker's
 // offset on the flange estimated with T_robot_sensor, docs/hand-eye.md) and its report.

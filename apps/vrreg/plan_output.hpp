@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `vrreg plan` output: the plan CSV rows and comment header, the summary and its JSON form.
 #include <nlohmann/json.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `vrreg plan --export urscript|krl|csv --program FILE`: the plan as a robot program.
 #include <CLI/CLI.hpp>

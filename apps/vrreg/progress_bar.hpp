@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A progress bar on stderr with an estimate of the time left, drawn only when stderr is a
 // terminal (never into a file or pipe); step() may be called from several threads.

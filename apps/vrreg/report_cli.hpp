@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `vrreg report` glue (cmd_report.cpp), also for `vrreg reproduce`, which writes the report of
 // its --out DIR: finding the Plotly library, reading the inputs, writing the page atomically.

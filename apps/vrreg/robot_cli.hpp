@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared by `vrreg fk` and `vrreg ik`: the ROBOT argument, --tool-mm, pose and joint printing.
 #include <Eigen/Geometry>

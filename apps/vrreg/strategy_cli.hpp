@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Procedure 2 (paper section 4.4) on the command line: the --strategy, --joint-norm and --seed
 // flags of register and evaluate, and how the strategy is printed.

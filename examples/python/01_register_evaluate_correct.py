@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """register -> evaluate -> correct on the example cell, as scripts/quickstart.sh does with the
 command line (the same numbers).
 

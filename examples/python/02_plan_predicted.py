@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Procedure 1 (paper section 6): plan fiducial cubes around two part points, measure the plan on
 the simulated UR5 test bed and predict the RMS_T it will give, before using the robot.
 

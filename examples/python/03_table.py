@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """A plain-text table, no plotting: RMS_T uncorrected and corrected on the simulated UR5 datasets
 A1 and A2 (paper Table 1) for a few seeds.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // vrreg's front door: register fiducials, evaluate on targets and correct points, each one call
 // (docs/library.md). The modules below it stay available under vrreg/<module>/.
@@ -5,6 +6,7 @@
 //   vrreg::MeasuredPoints fiducials;  // sensor_m and robot_m: 3 x N [m]
 //   const vrreg::RegisterResult r = vrreg::register_fiducials(fiducials);
 //   const vrreg::CorrectResult c = vrreg::correct(r.model, points);
+#include "vrreg/config.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
 #include "vrreg/core/types.hpp"

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Registration and RRBC correction of 10^6 points from Python: the vrreg call, the same call timed
 inside C++ (vrreg._vrreg._cpp_seconds_*: input already converted, so the difference is the
 binding's overhead), and the scipy peers a Python user would reach for. Prints a Markdown table

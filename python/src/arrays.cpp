@@ -1,14 +1,22 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "arrays.hpp"
 
 #include <fmt/format.h>
 
 #include <cstdint>
+#include <limits>
+
+#include "vrreg/core/check.hpp"
 
 namespace vrreg::python {
 namespace {
 
 using Strided = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>, Eigen::Unaligned,
                            Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>;
+
+// Bad input from Python is a vrreg.InputError (a ValueError) like the library's own, with the
+// Python argument's name in the message.
+[[noreturn]] void bad_input(const std::string& message) { throw InputError(message); }
 
 std::string shape_text(const py::array& a) {
   std::string text = "(";
@@ -20,7 +28,7 @@ std::string shape_text(const py::array& a) {
 
 py::array as_array(const py::handle& object, const char* what) {
   py::array a = py::array::ensure(object);
-  if (!a) throw py::value_error(fmt::format("{}: expected a numpy array (or a sequence)", what));
+  if (!a) bad_input(fmt::format("{}: expected a numpy array (or a sequence)", what));
   return a;
 }
 
@@ -28,13 +36,13 @@ py::array as_array(const py::handle& object, const char* what) {
 py::array_t<double, py::array::c_style | py::array::forcecast> as_doubles(const py::array& a,
                                                                           const char* what) {
   auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
-  if (!d) throw py::value_error(fmt::format("{}: cannot convert to float64", what));
+  if (!d) bad_input(fmt::format("{}: cannot convert to float64", what));
   return d;
 }
 
 void check_length(const py::array& a, const char* what, Eigen::Index n) {
   if (n >= 0 && a.shape(0) != n) {
-    throw py::value_error(
+    bad_input(
         fmt::format("{}: expected {} entries (one per point), got {}", what, n, a.shape(0)));
   }
 }
@@ -55,12 +63,13 @@ py::array read_only(py::array a) {
 }  // namespace
 
 Points3 points_from(const py::handle& object, const char* what) {
-  const py::array a = as_array(object, what);
+  py::array a = as_array(object, what);
+  // A single position (3,) is one point, as scipy's Rotation.apply takes it.
+  if (a.ndim() == 1 && a.shape(0) == 3) a = a.attr("reshape")(1, 3).cast<py::array>();
   if (a.ndim() != 2 || a.shape(1) != 3) {
-    throw py::value_error(
-        fmt::format("{}: expected an (N, 3) array of positions in metres, got "
-                    "shape {}",
-                    what, shape_text(a)));
+    bad_input(fmt::format("{}: expected an (N, 3) array of positions in metres (or one (3,) "
+                          "position), got shape {}",
+                          what, shape_text(a)));
   }
   const Eigen::Index n = a.shape(0);
   constexpr py::ssize_t kSize = sizeof(double);
@@ -78,7 +87,7 @@ Points3 points_from(const py::handle& object, const char* what) {
 Eigen::VectorXd vector_from(const py::handle& object, const char* what, Eigen::Index n) {
   const py::array a = as_array(object, what);
   if (a.ndim() != 1) {
-    throw py::value_error(
+    bad_input(
         fmt::format("{}: expected a 1-D array, got shape {}", what, shape_text(a)));
   }
   check_length(a, what, n);
@@ -89,17 +98,33 @@ Eigen::VectorXd vector_from(const py::handle& object, const char* what, Eigen::I
 std::vector<int> ints_from(const py::handle& object, const char* what, Eigen::Index n) {
   const py::array a = as_array(object, what);
   if (a.ndim() != 1) {
-    throw py::value_error(
+    bad_input(
         fmt::format("{}: expected a 1-D array of integers, got shape {}", what, shape_text(a)));
   }
   check_length(a, what, n);
   if (a.dtype().kind() != 'i' && a.dtype().kind() != 'u') {
-    throw py::value_error(fmt::format("{}: expected integers", what));
+    bad_input(fmt::format("{}: expected integers", what));
   }
   const auto d = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+  if (a.dtype().kind() == 'u' && a.dtype().itemsize() == 8) {
+    // uint64 above 2^63 would wrap to a negative int64 below; reject it by its own value.
+    const auto u = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+    for (py::ssize_t i = 0; i < u.shape(0); ++i) {
+      if (u.at(i) > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+        bad_input(fmt::format("{}[{}] = {} does not fit a 32-bit integer", what, i, u.at(i)));
+      }
+    }
+  }
   std::vector<int> out;
   out.reserve(static_cast<std::size_t>(d.shape(0)));
-  for (py::ssize_t i = 0; i < d.shape(0); ++i) out.push_back(static_cast<int>(d.at(i)));
+  for (py::ssize_t i = 0; i < d.shape(0); ++i) {
+    const std::int64_t v = d.at(i);
+    // Never truncate silently: 2**40 is not a configuration label.
+    if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
+      bad_input(fmt::format("{}[{}] = {} does not fit a 32-bit integer", what, i, v));
+    }
+    out.push_back(static_cast<int>(v));
+  }
   return out;
 }
 
@@ -107,7 +132,7 @@ Eigen::MatrixXd rows_from(const py::handle& object, const char* what, Eigen::Ind
                           Eigen::Index n_cols) {
   const py::array a = as_array(object, what);
   if (a.ndim() != 2 || (n_cols >= 0 && a.shape(1) != n_cols)) {
-    throw py::value_error(fmt::format("{}: expected an (N, {}) array, got shape {}", what,
+    bad_input(fmt::format("{}: expected an (N, {}) array, got shape {}", what,
                                       n_cols >= 0 ? std::to_string(n_cols) : "n", shape_text(a)));
   }
   check_length(a, what, n);

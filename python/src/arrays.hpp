@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // numpy <-> Eigen at the module's edge. Positions are (N, 3) arrays in metres (a row a point),
 // which is exactly the memory of the library's 3 x N column-major Points3: input is copied once

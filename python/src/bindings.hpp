@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One function per area adds its part of the module (module.cpp calls them in dependency order).
 #include <pybind11/pybind11.h>

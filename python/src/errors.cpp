@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The library's bad-input errors as Python exceptions (design.md 7): InputError and FileError are
 // ValueError subclasses, so `except ValueError` catches every bad input, a missing or unreadable
 // file included; FileError also carries .path and .line.

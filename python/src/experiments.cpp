@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `vrreg reproduce` from Python: the paper's experiments on the simulated test beds, as the
 // reproduce.json text (vrreg.reproduce parses it into a dict).
 #include "bindings.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hand-eye registration (docs/hand-eye.md): T_robot_sensor and the marker's offset on the flange
 // from joints and sensor positions (registration/marker_offset.hpp), for a built-in robot.
 #include <pybind11/stl.h>

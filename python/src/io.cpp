@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg.Measurements and read_measurements: a measurement CSV (design.md 6) read by the library's
 // own reader (include/vrreg/io/measurement_csv.hpp), so that register / evaluate / correct on it
 // give exactly what the command line gives on the same file.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Forward and inverse kinematics of the built-in arms (UR3/5/10/5e, KUKA LWR 4+) and of robot
 // files (DH or URDF): TCP = flange unless a tool offset is given; every IK solution with its
 // configuration label (analytic for UR and LWR chains, numerical for any other).
@@ -26,7 +27,7 @@ Eigen::Isometry3d pose_from(const py::object& pose) {
   const py::array_t<double, py::array::forcecast> a =
       py::array_t<double, py::array::forcecast>::ensure(pose);
   if (!a || a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4) {
-    throw py::value_error("pose: expected a (4, 4) homogeneous matrix (translation in metres)");
+    throw InputError("pose: expected a (4, 4) homogeneous matrix (translation in metres)");
   }
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   for (py::ssize_t r = 0; r < 3; ++r) {

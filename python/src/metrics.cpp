@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The metrics behind register's and evaluate's numbers, for arrays a user already has: sigma_L
 // (Eq. 1), sigma_noise and rho (Eq. 9), gamma and N_bad (section 5.1).
 #include <pybind11/stl.h>

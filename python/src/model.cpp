@@ -1,11 +1,14 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg.Model: the registration model (what register builds, the model file holds, evaluate and
 // correct use), saved and loaded as the command line's JSON file (include/vrreg/io/model_json.hpp).
 #include "vrreg/pipeline/model.hpp"
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/model_json.hpp"
 
@@ -22,9 +25,27 @@ Points3 fiducial_column(const RegistrationModel& model, bool robot) {
 }
 
 std::string model_repr(const RegistrationModel& model) {
-  return "<vrreg.Model " + std::to_string(model.fiducials.size()) + " fiducials, FRE " +
-         std::to_string(units::m_to_mm(model.fre_m)) + " mm, interpolation " +
-         to_string(model.interpolation.method) + ", source '" + model.source + "'>";
+  return fmt::format("<vrreg.Model {} fiducials, FRE {:.4f} mm, interpolation {}, source '{}'>",
+                     model.fiducials.size(), units::m_to_mm(model.fre_m),
+                     to_string(model.interpolation.method), model.source);
+}
+
+// T_robot_sensor as a 4 x 4 homogeneous matrix, [s R, tau; 0 0 0 1] (tau in metres).
+Eigen::Matrix4d homogeneous(const SimilarityTransform& T) {
+  Eigen::Matrix4d out = Eigen::Matrix4d::Identity();
+  out.topLeftCorner<3, 3>() = T.scale * T.rotation;
+  out.topRightCorner<3, 1>() = T.translation_m;
+  return out;
+}
+
+// Y = s R X + tau on (N, 3) positions, or on one (3,) position (then a (3,) result, as scipy's
+// Rotation.apply and Open3D's transform do).
+py::array apply_to(const RegistrationModel& model, const py::handle& points) {
+  const py::array a = py::array::ensure(points);
+  const bool single = a && a.ndim() == 1;
+  Points3 mapped = model.T_robot_sensor.apply_all(points_from(points, "points"));
+  if (single) return vector_copy(mapped.col(0));
+  return to_numpy(std::move(mapped));
 }
 
 }  // namespace
@@ -105,7 +126,27 @@ void bind_model(py::module_& m) {
       .def(
           "to_json", [](const RegistrationModel& s) { return io::format_model_json(s); },
           "The model file's text (JSON).")
-      .def("__repr__", &model_repr);
+      .def("as_matrix",
+           [](const RegistrationModel& s) { return matrix_copy(homogeneous(s.T_robot_sensor)); },
+           "T_robot_sensor as a (4, 4) homogeneous matrix [s R, tau; 0, 1] (tau in metres), as "
+           "scipy's Rotation.as_matrix and Open3D's transform take it.")
+      .def("apply", &apply_to, py::arg("points"),
+           "s R X + tau (Eq. 2) of (N, 3) sensor-frame positions [m], or of one (3,) position: "
+           "the registration alone. vrreg.correct(model, points) adds the RRBC correction.")
+      .def("__repr__", &model_repr)
+      // pickle, copy.copy and copy.deepcopy go through the model file's JSON, the one complete
+      // serialisation of a model (what `vrreg register -o` writes and load_model reads).
+      .def(py::pickle(
+          [](const RegistrationModel& s) { return py::make_tuple(io::format_model_json(s)); },
+          [](const py::tuple& state) {
+            if (state.size() != 1) throw InputError("Model: bad pickle state");
+            return io::parse_model_json(state[0].cast<std::string>(), "<pickle>");
+          }))
+      .def("__copy__", [](const RegistrationModel& s) { return RegistrationModel(s); })
+      .def(
+          "__deepcopy__",
+          [](const RegistrationModel& s, const py::dict&) { return RegistrationModel(s); },
+          py::arg("memo"));
 
   m.def("load_model", &io::read_model_json, py::arg("path"),
         "Reads a model file written by Model.save or `vrreg register -o`; FileError (a ValueError) "

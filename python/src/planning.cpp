@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Procedure 1 (paper section 6): where to measure around part points, with joints for every
 // location; on the simulated test beds' robots ('ur5', 'lwr4') their tool, orientation, arm angle
 // and home joints are taken, as `vrreg plan --robot ur5|lwr4` does.

@@ -1,10 +1,65 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "points.hpp"
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 #include "arrays.hpp"
+#include "vrreg/core/check.hpp"
 
 namespace vrreg::python {
+namespace {
+
+// The checks the library would make on MeasuredPoints, made first with the names the Python
+// caller used (`robot`, `weights`), so that the message names the argument, not a C++ member.
+void check_count(const char* what, Eigen::Index count, Eigen::Index n) {
+  if (count != n) {
+    throw InputError(fmt::format("{}: expected {} entries, one per row of sensor, got {}", what,
+                                 n, count));
+  }
+}
+
+template <typename Matrix>
+void check_finite(const char* what, const Matrix& values) {
+  for (Eigen::Index c = 0; c < values.cols(); ++c) {
+    for (Eigen::Index r = 0; r < values.rows(); ++r) {
+      if (!std::isfinite(values(r, c))) {
+        throw InputError(fmt::format("{}: values not all finite (row {} holds {})", what, c,
+                                     values(r, c)));
+      }
+    }
+  }
+}
+
+void check_like_python(const MeasuredPoints& p, const PointExtras& extras) {
+  const Eigen::Index n = p.size();
+  check_finite("sensor", p.sensor_m);
+  if (p.robot_m.cols() > 0) {
+    check_count("robot", p.robot_m.cols(), n);
+    check_finite("robot", p.robot_m);
+  }
+  if (!extras.weights.is_none()) {
+    check_count("weights", p.weights.size(), n);
+    check_finite("weights", p.weights.transpose());
+  }
+  if (!extras.names.is_none()) check_count("names", static_cast<Eigen::Index>(p.names.size()), n);
+  if (!extras.configs.is_none()) {
+    check_count("configs", static_cast<Eigen::Index>(p.configs.size()), n);
+  }
+  if (!extras.joints.is_none()) {
+    check_count("joints", p.joints_rad.cols(), n);
+    check_finite("joints", p.joints_rad);
+  }
+  if (!extras.n_readings.is_none()) check_count("n_readings", p.n_readings.size(), n);
+  if (!extras.sensor_sq_dev.is_none()) {
+    check_count("sensor_sq_dev", p.sensor_sq_dev_m2.cols(), n);
+    check_finite("sensor_sq_dev", p.sensor_sq_dev_m2);
+  }
+}
+
+}  // namespace
 
 MeasuredPoints measured_points(const py::handle& sensor, const py::handle& robot,
                                const PointExtras& extras) {
@@ -12,7 +67,12 @@ MeasuredPoints measured_points(const py::handle& sensor, const py::handle& robot
   p.sensor_m = points_from(sensor, "sensor");
   if (!robot.is_none()) p.robot_m = points_from(robot, "robot");
   if (!extras.weights.is_none()) p.weights = vector_from(extras.weights, "weights");
-  if (!extras.names.is_none()) p.names = extras.names.cast<std::vector<std::string>>();
+  if (!extras.names.is_none()) {
+    if (py::isinstance<py::str>(extras.names) || !py::isinstance<py::sequence>(extras.names)) {
+      throw InputError("names: expected a sequence of str, one per row of sensor");
+    }
+    p.names = extras.names.cast<std::vector<std::string>>();
+  }
   if (!extras.configs.is_none()) p.configs = ints_from(extras.configs, "configs", -1);
   if (!extras.joints.is_none()) p.joints_rad = rows_from(extras.joints, "joints", -1);
   if (!extras.n_readings.is_none()) {
@@ -22,6 +82,7 @@ MeasuredPoints measured_points(const py::handle& sensor, const py::handle& robot
   if (!extras.sensor_sq_dev.is_none()) {
     p.sensor_sq_dev_m2 = points_from(extras.sensor_sq_dev, "sensor_sq_dev");
   }
+  check_like_python(p, extras);
   return p;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The front door's inputs from Python: arrays (with optional per-point extras) into
 // vrreg::MeasuredPoints, or a vrreg.Measurements object used as it is.

@@ -1,5 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 // The results of register / evaluate / correct as small classes: scalars in metres, per-point
 // arrays as read-only numpy views of the C++ result (no copy; the result stays alive with them).
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "arrays.hpp"
@@ -44,30 +46,56 @@ py::object strategy2_dict(const std::optional<planning::Strategy2Summary>& s) {
   return d;
 }
 
-std::string mm_text(double metres) { return std::to_string(units::m_to_mm(metres)) + " mm"; }
+// The cross-validation table of interpolation 'auto' as a dict (metres), or None.
+py::object cross_validation_dict(const std::optional<CrossValidation>& cv) {
+  if (!cv) return py::none();
+  py::list rows;
+  for (const CrossValidationRow& row : cv->rows) {
+    py::dict d;
+    d["method"] = std::string(to_string(row.method));
+    d["applicable"] = row.applicable;
+    d["note"] = row.note;
+    d["rms_common"] = row.rms_common_m;
+    d["rms"] = row.rms_m;
+    d["n_predicted"] = row.n_predicted;
+    d["seconds"] = row.seconds;
+    rows.append(d);
+  }
+  py::dict out;
+  out["folds"] = cv->folds;
+  out["seed"] = cv->seed;
+  out["chosen"] = std::string(to_string(cv->chosen));
+  out["rows"] = rows;
+  return out;
+}
+
+// Lengths as the command line prints them: millimetres, 4 decimals (0.1 um).
+std::string mm_text(double metres) { return fmt::format("{:.4f} mm", units::m_to_mm(metres)); }
 
 std::string register_repr(const RegisterResult& r) {
   std::string text = "<vrreg.RegisterResult " + std::to_string(r.n_registered) +
                      " fiducials, FRE " + mm_text(r.registration.fre_m) + ", sigma_L " +
                      mm_text(r.rigid_body.sigma_l_m);
   if (r.noise.sigma_noise_m) text += ", sigma_noise " + mm_text(*r.noise.sigma_noise_m);
-  if (r.noise.rho) text += ", rho " + std::to_string(*r.noise.rho);
+  if (r.noise.rho) text += fmt::format(", rho {:.2f}", *r.noise.rho);
   if (!r.rejected.empty()) text += ", " + std::to_string(r.rejected.size()) + " rejected";
   return text + ">";
 }
 
+// gamma as the paper prints it (percent, one decimal), and the targets left uncorrected.
 std::string evaluate_repr(const EvaluateResult& r) {
-  return "<vrreg.EvaluateResult " + std::to_string(r.summary.n_targets) + " targets, " +
-         to_string(r.correction.method_used) + ": RMS_T " + mm_text(r.summary.unc_rms_t_m) +
-         " uncorrected, " + mm_text(r.summary.cor_rms_t_m) + " corrected, gamma " +
-         std::to_string(100.0 * r.summary.gamma) + " %, N_bad " + std::to_string(r.summary.n_bad) +
-         ">";
+  return fmt::format(
+      "<vrreg.EvaluateResult {} targets, {}: RMS_T {} uncorrected, {} corrected, gamma {:.1f}%, "
+      "N_bad {}, n_flagged {}>",
+      r.summary.n_targets, to_string(r.correction.method_used), mm_text(r.summary.unc_rms_t_m),
+      mm_text(r.summary.cor_rms_t_m), 100.0 * r.summary.gamma, r.summary.n_bad,
+      r.correction.n_flagged);
 }
 
 std::string correct_repr(const CorrectResult& r) {
-  return "<vrreg.CorrectResult " + std::to_string(r.correction.corrected_robot_m.cols()) + " points, " +
-         to_string(r.correction.method_used) + ", " + std::to_string(r.correction.n_flagged) +
-         " not correctable>";
+  return fmt::format("<vrreg.CorrectResult {} points, {}, n_flagged {}>",
+                     r.correction.corrected_robot_m.cols(), to_string(r.correction.method_used),
+                     r.correction.n_flagged);
 }
 
 // What evaluate and correct share: the interpolation used and the corrected points.
@@ -105,27 +133,7 @@ void bind_correction_members(py::class_<Result>& c) {
           "[m] (NaN where not corrected); None for the paper's stencils")
       .def_property_readonly(
           "cross_validation",
-          [](const Result& r) -> py::object {
-            if (!r.cross_validation) return py::none();
-            py::list rows;
-            for (const CrossValidationRow& row : r.cross_validation->rows) {
-              py::dict d;
-              d["method"] = std::string(to_string(row.method));
-              d["applicable"] = row.applicable;
-              d["note"] = row.note;
-              d["rms_common"] = row.rms_common_m;
-              d["rms"] = row.rms_m;
-              d["n_predicted"] = row.n_predicted;
-              d["seconds"] = row.seconds;
-              rows.append(d);
-            }
-            py::dict out;
-            out["folds"] = r.cross_validation->folds;
-            out["seed"] = r.cross_validation->seed;
-            out["chosen"] = std::string(to_string(r.cross_validation->chosen));
-            out["rows"] = rows;
-            return out;
-          },
+          [](const Result& r) { return cross_validation_dict(r.cross_validation); },
           "interpolation 'auto': the K-fold cross-validation table [m] and its choice (dict)");
   points_property(
       c, "corrected",
@@ -223,6 +231,10 @@ void bind_results(py::module_& m) {
       .def_property_readonly(
           "relabelled", [](const RegisterResult& r) { return strategy2_dict(r.relabelled); },
           "strategy 2: what was relabelled (dict), else None")
+      .def_property_readonly(
+          "cross_validation",
+          [](const RegisterResult& r) { return cross_validation_dict(r.cross_validation); },
+          "interpolation 'auto': the K-fold cross-validation table [m] and its choice (dict)")
       .def("__repr__", &register_repr);
 
   py::class_<EvaluateResult> ev(m, "EvaluateResult",

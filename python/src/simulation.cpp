@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated test beds (paper section 4): one of the paper's datasets ('ur5': A1, A2, B;
 // 'lwr4': grid) or a Procedure 1 plan, measured with a seed. The result holds the readings as
 // arrays and, averaged per visit, a vrreg.Measurements for register / evaluate.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // For python/benchmarks/bench.py: the same register / correct calls timed inside C++ on input
 // already converted, so that the difference to the Python call is the binding's overhead.
 #include <pybind11/stl.h>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Shared fixtures: the example cell and the built command line (VRREG_CLI, set by ctest)."""
 import json
 import os

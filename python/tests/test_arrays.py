@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """numpy in and out: any strides, float32 converted, and a 10^6-point array copied at most once."""
 import tracemalloc
 

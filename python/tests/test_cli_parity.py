@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Python on a measurement CSV gives the command line's numbers (1e-12 relative), and model files
 pass between the two."""
 import csv

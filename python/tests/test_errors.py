@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Every class of bad input raises a Python exception (a ValueError) and never kills the
 interpreter."""
 import numpy as np

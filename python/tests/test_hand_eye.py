@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Hand-eye registration from Python: a noise-free UR5 cell gives the offset and transform back,
 one fixed orientation is reported unobservable."""
 import numpy as np

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """UR and LWR 4+ kinematics: every IK solution reaches the pose (FK to 1e-12 m)."""
 from pathlib import Path
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The simulated test beds and Procedure 1 from Python."""
 import numpy as np
 import pytest

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """vrreg: vision-robot registration that knows its own accuracy (TRE, NIST's RRBC correction).
 
 Positions are (N, 3) numpy arrays in METRES (sensor frame X, robot frame Y; Y ~ R X + tau, paper
@@ -8,6 +9,7 @@ problems vrreg.FileError with .path and .line). docs/python.md has the guide.
 import json as _json
 
 from ._vrreg import (
+    __version__,
     CorrectResult,
     EvaluateResult,
     FileError,
@@ -47,7 +49,7 @@ def reproduce(seed: int = 1, *, ur5: bool = True, lwr4: bool = True) -> dict:
 
 
 __all__ = [
-    "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
+    "__version__", "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
     "Plan", "RegisterResult", "RHO_THRESHOLD", "Simulation", "StencilStatus", "correct",
     "estimate_marker_offset", "evaluate", "fk", "ik", "improvement", "load_model", "model_from_json", "plan",
     "read_measurements", "register", "reproduce", "rho", "rigid_body_statistics", "robots",

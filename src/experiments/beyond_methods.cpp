@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Beyond the paper: every correction method on one registration of a dataset's fiducials, the
 // results cut into tables per group of targets (the KUKA's configurations).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Beyond the paper: the datasets of the table (docs/reproduction.md, "Beyond the paper"), each
 // simulated twice with the same seed — as measured and without noise, for the noise floor.
 #include "vrreg/experiments/beyond_paper.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/experiments/beyond_report.hpp"
 
 #include <cmath>
@@ -107,7 +108,7 @@ std::string format_beyond_tables(const CellTable& cells,
            shown(cells, p + "unc_rms_t_mm", 3) + ", noise floor " +
            shown(cells, p + "noise_floor_mm", 3) + "\n";
     text::TextTable table;
-    // Over several seeds the median of cor RMS_T too: issue 12's targets are medians.
+    // Over several seeds the median of cor RMS_T too: one seed's cell can be a lucky or an unlucky robot.
     const bool seeds = cells.n_seeds > 1;
     if (seeds) {
       table.add({"method", "cor RMS_T", "median", "x floor", "TRE/sd", "2 sd %", "flagged"});

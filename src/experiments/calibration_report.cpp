@@ -1,4 +1,5 @@
-// Markdown report and acceptance bands of the test-bed calibration (issue 4).
+// SPDX-License-Identifier: Apache-2.0
+// Markdown report and acceptance bands of the test-bed calibration.
 #include <algorithm>
 #include <cstdio>
 #include <functional>
@@ -218,7 +219,7 @@ void lwr4_table(const std::vector<Lwr4SeedFigures>& seeds, bool strategy2, std::
 
 std::string format_calibration_markdown(const CalibrationReport& report) {
   std::string md;
-  md += "### Acceptance (issue 4)\n\n| criterion | band | value | verdict |\n|---|---|---|---|\n";
+  md += "### Acceptance\n\n| criterion | band | value | verdict |\n|---|---|---|---|\n";
   for (const Check& c : checks(report)) {
     md += "| " + c.criterion + " | " + c.band + " | " + c.value + " | " +
           (c.pass ? "met" : "**not met**") + " |\n";

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/experiments/simulated_measurements.hpp"
 
 namespace vrreg::experiments {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Plain-text tables with aligned columns, for the reproduction's printed output.
 #include <string>

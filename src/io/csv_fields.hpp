@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Field-level helpers for the measurement CSV: splitting, trimming, strict number parsing.
 #include <optional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Words for what a non-regular file is, shared by the input and output checks.
 #include <sys/stat.h>

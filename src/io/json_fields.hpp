@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Typed access to the members of a parsed JSON document, with errors that name the key path
 // (e.g. "fiducials[3].robot_mm") and the file.

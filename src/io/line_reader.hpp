@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reads a text file line by line with a bound on the line length, so that memory stays bounded
 // whatever the file holds. Accepts LF and CRLF endings, a UTF-8 BOM, a missing final newline.

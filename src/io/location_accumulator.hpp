@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Folds the rows of a measurement CSV into locations as they stream past: repeat readings of one
 // (point, config) are averaged with Welford's update, so memory grows with the locations only.

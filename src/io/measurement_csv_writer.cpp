@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/io/measurement_csv_writer.hpp"
 
 #include <cmath>

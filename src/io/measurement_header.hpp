@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The header line of a measurement CSV: which field holds which quantity, in which unit.
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One data row of a measurement CSV, parsed and converted to SI units.
 #include <Eigen/Geometry>

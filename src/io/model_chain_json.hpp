@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to io: a serial chain in a model file (the hand-eye flange robot, the joint-space
 // field model's robot): name, DH rows, joint limits, base and tool transforms.

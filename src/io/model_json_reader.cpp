@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>

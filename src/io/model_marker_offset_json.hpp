@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to io: the "marker_offset" member of a model file (hand-eye registration).
 #include <nlohmann/json.hpp>

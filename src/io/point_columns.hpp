@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Header of the point files other than the measurement CSV (parts file, plan file): the columns
 // point, role, part, robot_{x,y,z}_mm|_m, sensor_{x,y,z}_mm|_m, config, repeat, q1..qN_rad|_deg,

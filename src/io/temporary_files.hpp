@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The temporary files being written right now, so that a signal handler can remove them: a fixed
 // table in static storage, read by the handler with atomics only (async-signal-safe).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Checks that a line read from a file is text: no NUL or control bytes, valid UTF-8.
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/kinematics/forward_kinematics.hpp"
 
 namespace vrreg::kinematics {

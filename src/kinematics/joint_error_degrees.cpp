@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Degree choice of the joint-space error model by K-fold cross-validation. Every candidate model
 // is a subset of the columns of one design matrix (all joints at the largest degree), so each fold
 // needs only its Gram matrix: a candidate costs a few small Cholesky solves, not a refit.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internals of the joint-space error model (joint_error_model.hpp): the parameter layout, the
 // basis functions and the design rows d e / d x of one fiducial.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fitting the joint-space error model: input checks, the shared state, the first-order solve
 // and the optional Gauss-Newton refinement (joint_error_model.hpp).
 #include <Eigen/QR>

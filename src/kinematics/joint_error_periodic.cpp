@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Periodic joint-angle error terms of the joint-space error model, found from the fiducials: a
 // greedy periodogram (least squares on a sine and a cosine, as Lomb-Scargle) of what a smooth
 // model leaves. A transmission's cyclic error (gear mesh, harmonic drive) has a period far

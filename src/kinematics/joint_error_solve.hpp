@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The fitting steps of the joint-space error model shared by the fit, the degree choice and the
 // cross-validation (joint_error_model.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal: fitting one wrapped joint value into its limits by 2 pi shifts.
 #include <algorithm>

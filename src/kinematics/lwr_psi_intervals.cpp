@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Feasible arm angles: each joint of the base configuration is theta = atan2(N(psi), D(psi)) or
 // theta = acos(C(psi)) with N, D, C of the form a sin(psi) + b cos(psi) + c (entries of R03(psi)
 // and R47(psi)). A joint meets a limit value beta where N cos(beta) - D sin(beta) = 0 (tangent

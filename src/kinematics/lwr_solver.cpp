@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LWR 4+ arm-angle IK (after Shimizu et al. 2008, re-derived for this DH table):
 //   shoulder S = (0, 0, d1), wrist W = p - d7 z7, theta4 from |W - S| (law of cosines);
 //   reference: theta3 = 0, theta1 = atan2 of W - S in the base xy-plane, theta2 from the planar

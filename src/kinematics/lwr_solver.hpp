@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal: the pieces of the LWR 4+ arm-angle IK shared by the solver, the inverse map and the
 // feasible-psi search. All angles here are DH angles theta = q + offset.

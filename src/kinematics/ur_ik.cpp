@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Closed-form UR inverse kinematics (after Hawkins 2013, re-derived for this code):
 //   wrist centre o5 = p - d6 z6; z1 . o5 = d4 fixes q1 (2 branches);
 //   z1 in the flange frame is (s5 c6, -s5 s6, c5), which fixes q5 (2 branches) and q6;

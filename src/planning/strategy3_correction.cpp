@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Strategy 3's correction through the nearest-configuration correction method
 // (correction/corrector.hpp), on fiducials and targets given as locations.
 #include "vrreg/planning/strategy3_correction.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "rigid_moments.hpp"
 
 #include <cmath>

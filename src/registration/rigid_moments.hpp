@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal: the one-pass moments of register_rigid's fast path (RegistrationOptions::residuals =
 // false). Four lanes over the points, products accumulated with a fused multiply-add, blocks of

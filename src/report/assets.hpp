@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The report page's own style sheet and script (report_assets.cpp), inlined into every page.
 

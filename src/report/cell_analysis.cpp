@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The numbers behind a cell report (Eq. 1, 3, 4, 9; section 5.1's gamma, N_bad, Delta TRE).
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cell report's page: summary table, L histogram (as Fig. 4), TRE per target (as Fig. 12-13),
 // RMS_T per configuration (as Fig. 14-15), Delta TRE histogram (as Fig. 11), 3D volume (Fig. 10).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cell report's verdict in words: is RRBC expected to help (rho against 2.5, section 5.1),
 // did it (gamma), where did it fail (N_bad), what was left out (flagged targets).
 #include <fmt/format.h>

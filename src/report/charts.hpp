@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Building blocks of the report's Plotly charts: layouts whose axis titles carry units, traces
 // from histograms and per-target errors, and the colours every chart shares.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Escaping for the report's HTML: text into elements and attributes, JSON and JavaScript into
 // <script> elements, so that no label from a user's file can close a tag or a script.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Renders a ReportPage as one HTML document: header, verdict, contents, sections with tables and
 // figure placeholders, the figures' JSON, the inlined Plotly library and the page script.
 #include <sstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fig. 16 (paper section 6, Procedure 1): a plan's part points, the fiducial grid around each and
 // the visiting order, in the robot frame.
 #include <map>

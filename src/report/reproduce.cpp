@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The reproduce report: reads reproduce.json (docs/report.md) and lays out the paper's tables and
 // figures, section by section, with the findings on top.
 #include "reproduce_parts.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Dataset B per target (paper section 5.1): Fig. 10, the targets where RRBC failed at d_max and
 // d_min in the volume, and Fig. 11, the Delta TRE histogram where it succeeded at d_min.
 #include <algorithm>

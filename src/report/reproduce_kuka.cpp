@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // KUKA figures of the reproduce report (paper section 5.2): Fig. 5-6 (L histograms per
 // configuration, Strategies 1 and 2), Fig. 12-13 (TRE per target), Fig. 14-15 (RMS_T per
 // configuration, with Strategy 3's from Table 2 beside them).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The pieces of the reproduce report (report_reproduce*.cpp), each from reproduce.json.
 #include <nlohmann/json.hpp>

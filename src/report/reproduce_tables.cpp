@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tables 1 and 2 beside the paper's numbers, and the paper's findings checked on ours.
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // UR5 figures of the reproduce report: Fig. 4 (L histogram, A2), Fig. 7-8 (corrected RMS_T and
 // N_bad against d, dataset B), Fig. 10 (where RRBC failed), Fig. 11 (Delta TRE at d_min).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reading numbers out of reproduce.json (docs/report.md): a number, or {"mean": m, "sd": s} when
 // `vrreg reproduce --seeds K` averaged over seeds. Absent or null means "not given"; anything

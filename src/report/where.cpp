@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where in the volume a subset of targets lies, in words (paper section 5.1: "three out of four
 // points where RRBC failed for d_min are located on the lowest layer of targets").
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/robot_io/robot_file.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "robot_file_document.hpp"
 
 #include <yaml-cpp/yaml.h>

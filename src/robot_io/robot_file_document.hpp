@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal: a robot file parsed into JSON values, with the source line of each value where the
 // syntax records one (YAML), so that errors can name "file:line: dh[2].d_m: ...".

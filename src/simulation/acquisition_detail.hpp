@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared by simulate_dataset and simulate_plan: the acquisition once the visits are planned.
 #include "vrreg/simulation/acquisition.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Renders a vrreg report in headless Chromium (Debian's, driven by playwright-core from web/) and
 // checks it as a reader would see it: every chart drawn, with a title, a caption and axis titles;
 // no console error, no page error, no request leaving the machine. Keeps a full-page screenshot.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every bad input: non-zero exit, one line on stderr naming the file (and line), no crash, no
 // hang, no output file left behind.
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Runs the built `vrreg` command and captures exit status, stdout and stderr.
 #include <sys/wait.h>

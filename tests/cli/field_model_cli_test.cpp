@@ -1,4 +1,5 @@
-// Field models as a user runs them (issue 12): evaluate --interpolation auto prints the
+// SPDX-License-Identifier: Apache-2.0
+// Field models as a user runs them : evaluate --interpolation auto prints the
 // cross-validation table and the predicted sd with its calibration, register --interpolation
 // auto stores the choice, the CSVs gain predicted_sd_mm, the same input gives the same bytes.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Golden outputs: the commands of tests/data/golden/commands.txt print and write exactly
 // what they did before the library was refactored, so a user's numbers never change because the
 // code moved. VRREG_GOLDEN_UPDATE=1 records them again (on purpose only).

@@ -1,4 +1,5 @@
-// Hand-eye registration from the command line (issue 11, docs/hand-eye.md): plan with offset
+// SPDX-License-Identifier: Apache-2.0
+// Hand-eye registration from the command line (docs/hand-eye.md): plan with offset
 // poses and a URScript program, simulate a cell whose marker offset is unknown, register with the
 // offset estimated, evaluate, export; and the paper's one-orientation layout refused.
 #include <gtest/gtest.h>

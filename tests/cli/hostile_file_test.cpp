@@ -1,4 +1,5 @@
-// Hostile model and reproduce files at the command line (issue 13): a 65 000-level JSON and a
+// SPDX-License-Identifier: Apache-2.0
+// Hostile model and reproduce files at the command line: a 65 000-level JSON and a
 // number beyond a double end in exit status 1 and one line naming the file.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The commands against an independent implementation of the paper's equations, written here from
 // scratch (own CSV parsing, Horn's quaternion registration, brute-force sigma_L, hand-made
 // octuplet and trilinear weights): register/evaluate/correct must agree to 1e-6 mm.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // No command writes over its own input, however the output is spelled: the same path, through
 // `sub/..`, a symbolic link or a hard link to the input. Each refusal exits 1 with one line naming
 // both files, and the input is byte for byte what it was.

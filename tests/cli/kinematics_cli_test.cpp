@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `vrreg fk` and `vrreg ik` as a user runs them: every IK solution maps back through fk, errors
 // are one line with exit status 1.
 #include <gtest/gtest.h>

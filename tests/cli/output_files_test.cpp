@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How the commands treat what is at an output path and odd inputs: only regular files are
 // replaced (a device, FIFO or directory is refused and kept), symbolic links are written through,
 // permissions are kept, read-only files refused; a FIFO input fails at once; a 255-byte name

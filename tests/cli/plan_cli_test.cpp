@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `vrreg plan` as a user runs it: a plan CSV in visiting order with joints, the d_min check and
 // its --force, unreachable part points named, bad parts files named by file and line.
 #include <gtest/gtest.h>

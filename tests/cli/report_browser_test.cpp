@@ -1,4 +1,5 @@
-// The browser test of issue 6: `vrreg report` pages rendered in headless Chromium (Debian's
+// SPDX-License-Identifier: Apache-2.0
+// The browser test: `vrreg report` pages rendered in headless Chromium (Debian's
 // chromium, driven by playwright-core from web/ through tests/browser/check_report.mjs), as a
 // reader would open them: every chart drawn, with title, caption and axis titles; no console
 // error; no request leaving the machine. Screenshots are kept in <build>/browser-screenshots/.

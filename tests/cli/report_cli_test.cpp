@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `vrreg report` as a user runs it: one self-contained HTML file with a verdict for their cell,
 // the same bytes for the same input, labels that cannot inject script, clear one-line errors
 // (missing Plotly, missing reproduce.json, wrong options) and no file left on failure.

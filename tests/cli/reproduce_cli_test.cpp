@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `vrreg reproduce` as a user runs it: the tables beside the paper's, the findings, the figure data
 // written atomically into --out, the --json shape (= reproduce.json), several seeds as mean +- sd,
 // and no progress bar when stderr is not a terminal.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A robot file for the command-line tests: the UR5's DH table under another name.
 namespace vrreg::testing {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // register --robust as a user runs it: the bad fiducial named with its deviation, the grid kept
 // (its correction filled from the neighbours), the JSON object; robust-study's table.
 #include <gtest/gtest.h>

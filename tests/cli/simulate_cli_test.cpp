@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg simulate as a user runs it: same seed same bytes, the seed printed, error-model files,
 // one-line errors, and the paper's register -> evaluate flow on a simulated A1.
 #include <gtest/gtest.h>

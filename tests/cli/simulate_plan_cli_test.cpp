@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Predicting a plan's accuracy before the robot runs it (Procedure 1, paper section 6):
 // vrreg plan -> vrreg simulate TESTBED --plan -> vrreg register -> vrreg evaluate --cube-mm.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // register / evaluate / correct with --strategy 1|2|3 (Procedure 2, paper section 4.4) on a small
 // two-configuration cell, and every bad combination: one line on stderr naming the file.
 #include <gtest/gtest.h>

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 // Usage errors are one line with exit status 2; an output that is a directory, FIFO or device is
 // refused before any work (before the inputs are even read); above 20 000 fiducials `register`
-// samples sigma_L and says so (issue 13).
+// samples sigma_L and says so.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -26,6 +27,7 @@ TEST(UsageErrors, AreOneLineWithStatus2) {
   for (const std::string& args : std::vector<std::string>{
            "simulate ur5 A1 --seed -1 -o " + shell_quoted(dir / "s.csv"), "simulate ur5 A1 -o ''",
            "register", "register --fiducials x.csv --no-such-flag", "no-such-command",
+           "serve --help", "--version serve",
            "evaluate --model m.json --targets t.csv --per-target ''"}) {
     const CliResult r = run_vrreg(args);
     EXPECT_EQ(r.status, 2) << args;

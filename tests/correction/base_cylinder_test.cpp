@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The base-axis cylindrical coordinates kriging works in (correction/base_cylinder.hpp): exact on
 // points whose cylindrical coordinates are known, lossless for vectors, and refused where the
 // azimuth is ill-defined or would be cut.

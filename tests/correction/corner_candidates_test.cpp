@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Corner look-up with several arm configurations per nominal position (Strategy 3, section 4.4).
 #include "vrreg/correction/corner_candidates.hpp"
 

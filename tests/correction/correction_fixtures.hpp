@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Layouts for the correction tests: regular grids, the paper's A1 pattern, affine fields.
 #include <Eigen/Core>

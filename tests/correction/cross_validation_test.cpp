@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The field models' cross-validation and the corrector's predicted sd (docs/field-models.md):
 // exact where the answer is known (affine fields, pure noise), `auto` chooses the lowest error on
 // the common fiducials, and the predicted uncertainty is calibrated (Monte Carlo).

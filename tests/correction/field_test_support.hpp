@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Data for the field-model tests: Gaussian-process draws and polynomial fields.
 #include <Eigen/Cholesky>

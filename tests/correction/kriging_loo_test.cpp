@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Leave-one-out for exact universal kriging: the closed form (Dubrule 1983) against refitting
 // without each fiducial, and the latent-sd calibration it drives against Monte Carlo.
 #include <gtest/gtest.h>

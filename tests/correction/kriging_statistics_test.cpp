@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Monte Carlo checks of the kriging fit and its predicted sd on data drawn from the model itself,
 // and of the local approximation against the exact model.
 #include <gtest/gtest.h>

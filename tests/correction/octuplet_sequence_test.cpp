@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Octuplet corners measured more than once (dataset B: neighbouring cubes share corners): the
 // reading nearest the target's in the visiting order is taken; without a sequence, an error.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LOO outlier check against closed forms: chi-square quantiles, exact affine prediction,
 // the variance factor of a symmetric neighbourhood, the false-alarm rate under Gaussian noise.
 #include "vrreg/correction/outliers.hpp"

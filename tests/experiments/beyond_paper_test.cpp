@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Beyond the paper: the noise floor against cases where it is known (zero without noise, the
 // simulated noise's theoretical RMS with it), the field models on an affine error field (which
 // trilinear interpolation carries exactly), the table's structure, methods that throw shown as

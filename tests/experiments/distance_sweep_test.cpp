@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Dataset B's sweep (Figures 7, 8, 11) on a hand-made cell: one target at c, fiducials at the
 // corners of cubes of 40 and 20 mm around it, read with a quadratic error q |Y - c|^2 along z.
 // The registration is then the identity shifted by -q m (m = mean |Y - c|^2 = 0.00075 m^2), so

@@ -1,4 +1,5 @@
-// The findings logic (issue 5's acceptance) on hand-made figures: each finding met, broken one at
+// SPDX-License-Identifier: Apache-2.0
+// The findings logic on hand-made figures: each finding met, broken one at
 // a time, and not evaluated when its dataset was not run; the rate over seeds and the 80 % rule.
 #include "vrreg/experiments/findings.hpp"
 

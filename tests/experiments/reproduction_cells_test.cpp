@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The reproduction's cells: named by their JSON pointer, mean +- sd over seeds, key cells that
 // must agree between seeds, and the JSON shapes of one seed (numbers) and of several ({mean, sd}).
 #include "vrreg/experiments/reproduction_cells.hpp"

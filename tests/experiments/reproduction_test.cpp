@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The whole reproduction on the simulated test beds (a few seconds, also under the sanitizers): the
 // default seed meets every finding of the paper; the same seeds give the same bytes whatever the
 // number of threads; dataset B's sweep agrees with the calibration's figures.
@@ -32,7 +33,7 @@ TEST(Reproduction, DefaultSeedMeetsEveryFinding) {
   for (const Finding& f : evaluate_findings(r)) {
     EXPECT_TRUE(f.evaluated && f.met) << f.statement << ": " << f.detail;
   }
-  // Dataset B as the calibration of issue 4 computed it.
+  // Dataset B as the test-bed calibration (docs/testbed-calibration.md) computed it.
   const Ur5SeedFigures c = calibrate_ur5(simulation::ur5_testbed(), 1, std::nullopt);
   ASSERT_EQ(c.b_cor_rms_t_m.size(), r.b->steps.size());
   for (std::size_t k = 0; k < r.b->steps.size(); ++k) {

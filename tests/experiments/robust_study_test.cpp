@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The robust check on a few simulated A1 cells (the full rates: vrreg robust-study, docs/outliers.md).
 #include "vrreg/experiments/robust_study.hpp"
 

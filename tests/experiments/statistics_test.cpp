@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mean +- sd over seeds and Spearman's rank correlation, against values worked out by hand.
 #include "vrreg/experiments/statistics.hpp"
 

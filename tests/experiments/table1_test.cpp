@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Table 1's runner on a hand-made cell whose figures are known in closed form: fiducials on a
 // 3 x 3 x 3 grid (h = 50 mm) measured with a scale error delta (X = Y + delta (Y - c)), which the
 // registration cannot absorb and RRBC interpolates exactly; eight targets at the centres of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Table 2's runner on the two-arm cell (tests/support/two_arm_cell.hpp): the IK swaps its listing
 // for x >= 40 mm, so Strategy 2 switches 3/5 of the points and Strategies 2 and 3 correct better
 // than Strategy 1 in both configurations; Strategy 1 equals a registration per file label.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replays the fuzz harnesses' seed corpora and every input a fuzz run found (regressions/) through
 // the same harness functions scripts/fuzz.sh fuzzes, in the ordinary test suite (any compiler).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz harness: the error-model file reader (src/robot_io); an accepted model must write and
 // read back.
 #include "fuzz_support.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz harness: the measurement CSV reader (design.md 6), default and sensor-only options.
 #include <cmath>
 #include <sstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz harness: the model JSON reader; an accepted model must write and read back unchanged.
 #include "fuzz_support.hpp"
 #include "vrreg/io/model_json.hpp"

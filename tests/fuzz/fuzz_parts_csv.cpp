@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz harness: the parts CSV reader (vrreg plan --parts).
 #include <sstream>
 

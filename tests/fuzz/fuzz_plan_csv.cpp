@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz harness: the plan CSV reader; an accepted plan must write and read back.
 #include <sstream>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz harness: the robot file reader (src/robot_io), as JSON, as YAML and sniffed.
 #include "fuzz_support.hpp"
 #include "vrreg/robot_io/robot_file.hpp"

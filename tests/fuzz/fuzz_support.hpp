@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared by the fuzz harnesses (tests/fuzz/fuzz_*.cpp): under libFuzzer (scripts/fuzz.sh) each
 // file is its own fuzzer; in the test suite (corpus_replay_test.cpp) the seed corpora and the

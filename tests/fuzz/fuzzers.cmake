@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # libFuzzer executables, one per harness (VRREG_FUZZ, preset `fuzz`, clang only; scripts/fuzz.sh).
 # The whole build carries -fsanitize=fuzzer-no-link (coverage feedback) next to ASan + UBSan.
 file(GLOB fuzz_harnesses CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/fuzz_*.cpp)

@@ -1,4 +1,5 @@
-// The field models (issue 12) through the front door on the simulated A1 cell: register with the
+// SPDX-License-Identifier: Apache-2.0
+// The field models through the front door on the simulated A1 cell: register with the
 // robot, evaluate with each model; the corrections beat the paper's octuplet RRBC by the margins
 // measured with the scientific-Python peers, `auto` picks the joint-space model on a cell built
 // from joint errors, and the predicted uncertainties are calibrated.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // On a synthetic smooth + wavy robot error, RRBC's corrected RMS_T falls as the fiducial grid
 // spacing falls (paper section 5.1, Fig. 7), and RRBC beats the plain registration.
 #include <gtest/gtest.h>

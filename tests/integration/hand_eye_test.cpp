@@ -1,4 +1,5 @@
-// Hand-eye registration end to end (issue 11): a simulated UR5 cell whose marker sits at an
+// SPDX-License-Identifier: Apache-2.0
+// Hand-eye registration end to end: a simulated UR5 cell whose marker sits at an
 // unknown offset on the flange, a plan with tilted poses, the offset estimated with the
 // registration, and RRBC on top — against the same data registered with the offset known, and
 // with the offset ignored.

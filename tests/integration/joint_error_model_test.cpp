@@ -1,4 +1,5 @@
-// The joint-space error model (issue 12) end to end on the simulated test beds: A1 (UR5) and the
+// SPDX-License-Identifier: Apache-2.0
+// The joint-space error model end to end on the simulated test beds: A1 (UR5) and the
 // KUKA grid with all four arm configurations in one model, against octuplet RRBC and the noise
 // floor; and on a Cartesian (not joint-periodic) error field, where it must not fit. Prints the
 // numbers docs/joint-space-model.md records.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Procedure 2 end to end (paper section 4.4) on a small synthetic cell whose robot error depends
 // on the arm configuration and whose IK changes its listing order half way: Strategies 2 and 3
 // correct targets better than Strategy 1, in every configuration.

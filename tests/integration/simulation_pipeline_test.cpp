@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 // Simulated test beds through the whole pipeline: measurement files, registration, Strategy 2 and
-// the calibration against the paper (issue 4).
+// the calibration against the paper (docs/testbed-calibration.md).
 #include <gtest/gtest.h>
 
 #include <cstdio>

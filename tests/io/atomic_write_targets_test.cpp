@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What write_file_atomically does with what is already at the target: replaces only regular
 // files, writes through symbolic links, keeps permission bits, refuses read-only files.
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FileError reads "path:line: message", or "path: message" when there is no line.
 #include "vrreg/io/file_error.hpp"
 

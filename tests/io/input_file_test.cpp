@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Readers take regular files only: a FIFO, device or directory is refused before it is opened,
 // so a FIFO with no writer cannot block them.
 #include "vrreg/io/input_file.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every kind of bad measurement file gives one FileError line naming the file and the line.
 #include <gtest/gtest.h>
 

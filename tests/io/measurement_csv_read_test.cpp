@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accepted measurement CSV variants and the averaging of repeat readings.
 #include <gtest/gtest.h>
 

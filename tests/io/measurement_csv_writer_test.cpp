@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writing readings and reading them back gives the same averages.
 #include "vrreg/io/measurement_csv_writer.hpp"
 

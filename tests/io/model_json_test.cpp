@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The model file: exact round trip, and a clear error for every kind of broken file.
 #include "vrreg/io/model_json.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The model file's Procedure 2 block (paper section 4.4): round trip, absent for plain models,
 // and clear errors for a broken block.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A sampled sigma_L says so in the model file (rigid_body_sampled.hpp), and reads back.
 #include <gtest/gtest.h>
 

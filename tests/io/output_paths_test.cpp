@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An output that is an input of the same command (however it is spelled) is refused.
 #include "vrreg/io/output_paths.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The parts file of `vrreg plan` (Procedure 1): what it accepts, and one FileError line naming
 // file and line for every kind of bad input.
 #include "vrreg/io/parts_csv.hpp"

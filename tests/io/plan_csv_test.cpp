@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plan file: written exactly and read back; bad plan files give one FileError line.
 #include "vrreg/io/plan_csv.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The signal handler of remove_temporary_files_on_signal: a temporary file being written is
 // removed on SIGTERM and SIGINT, and the process still ends by the signal.
 #include "io/temporary_files.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Strategy 2 of Procedure 2 (paper section 4.4): relabelling along a hand-made path with known
 // switches, the norm's effect on the choice, angle wrapping, and bad input.
 #include "vrreg/kinematics/configuration_order.hpp"

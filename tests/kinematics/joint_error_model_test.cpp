@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The joint-space error model on robots whose error it can represent exactly (DH deltas, joint
 // offsets, polynomial joint errors, a marker offset): predictions at held-out joints recovered to
 // 1e-9 m, with and without noise; bad input reported.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Periodic (cyclic transmission) terms of the joint-space error model: a short-period joint error
 // seen at sparse angles, as on a grid whose columns share q1, is found (period, amplitude) and
 // predicted between the sampled angles, where a Legendre series cannot; noise alone adds no term;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers for the kinematics tests: random joint vectors and pose errors.
 #include <Eigen/Geometry>

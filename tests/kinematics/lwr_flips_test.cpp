@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The eight LWR configurations from the base one at once (lwr_flips, used by the IK) give the
 // bits of one configuration at a time (lwr_flip), also where wrapping is at its edges.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/kinematics/lwr_psi_intervals.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The identification Jacobian of marker_partials against central finite differences of forward
 // kinematics with perturbed DH rows, joints and marker offsets.
 #include "vrreg/kinematics/marker_partials.hpp"

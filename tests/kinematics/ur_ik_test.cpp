@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/kinematics/ur_ik.hpp"
 
 #include <gtest/gtest.h>

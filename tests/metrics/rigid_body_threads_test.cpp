@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sigma_L (Eq. 1) over all pairs: the vectorised, threaded kernel gives the bits of the plain
 // loop folded in tbb::parallel_deterministic_reduce's fixed tree (the implementation before it,
 // kept here as the reference), on any number of threads.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The front door on arrays (names, configs, joints, repeats given as MeasuredPoints) gives exactly
 // what it gives on the same locations read from a measurement file, with Procedure 2's strategies.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The front door (vrreg/vrreg.hpp) on in-memory arrays: what it computes agrees with independent
 // references (Eigen::umeyama, brute-force sigma_L, hand-made trilinear), its parts agree with each
 // other (register/evaluate/correct), and bad input is an InputError that says what is wrong.

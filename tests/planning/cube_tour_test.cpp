@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Order of the cubes: a permutation, travel reported right, never worse than the input order,
 // and the obvious order on a line of cubes.
 #include "vrreg/planning/cube_tour.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The d_min > 2.5 sigma_noise criterion (paper Eq. 9): an error naming the values unless forced.
 #include <string>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fiducial cube of Procedure 1 (paper section 6): counts, spacing, the part point at the
 // centre of a cell, d = sqrt(3)/2 A, and how the half-width is rounded.
 #include "vrreg/planning/fiducial_grid.hpp"

@@ -1,4 +1,5 @@
-// Hand-eye planning (issue 11): the tilted poses keep every location's TCP position and arm
+// SPDX-License-Identifier: Apache-2.0
+// Hand-eye planning: the tilted poses keep every location's TCP position and arm
 // configuration and make the marker offset observable; the robot programs written from the plan
 // parse (a small URScript and KRL reader) and their joints reproduce the plan's poses by FK.
 #include <cctype>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The whole of Procedure 1 on the UR5 and the LWR 4+: grid per cube, visiting order and the joints
 // of every location (FK back to the position, nearest IK solution to the part point's joints).
 #include "vrreg/planning/plan.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The robot the planning tests plan for.
 #include <Eigen/Geometry>

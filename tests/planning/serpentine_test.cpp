@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Visiting order inside a cube: every node once, consecutive nodes one grid step apart (paper
 // Fig. 2), for every start corner and axis order; the target goes between two cell corners.
 #include "vrreg/planning/serpentine.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Strategy 2 (paper section 4.4) on a measurement set: the visiting path is the order of first
 // appearance of the points, every location of a point is one of its configurations.
 #include "vrreg/planning/strategy2_labels.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Strategy 3 of Procedure 2 (paper section 4.4): the nearest-configuration choice at each cube
 // corner on hand-made joints, the seeded volume-corner registration, and exact correction when an
 // arm's error is affine and every corner is taken in the target's arm.

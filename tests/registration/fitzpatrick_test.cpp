@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Monte Carlo against Fitzpatrick, West and Maurer (1998): <TRE^2> and <FRE^2>, within 3 %.
 #include "vrreg/registration/fitzpatrick.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // register_rigid without residuals (RegistrationOptions::residuals = false): the transform from
 // the compensated one-pass moments and FRE in closed form, against the residuals path and a
 // two-pass FRE in extended precision.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The report's escaping: no text from a user's file can close a tag or a script, and JSON read
 // back by the page's JSON.parse is the value that was written.
 #include "report/escape.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The report page and its words: the page counts and places every chart, escapes its text,
 // gives the same bytes for the same input; where RRBC's failures lie is said by layer; the
 // reproduce page draws what reproduce.json holds and lists what it lacks.

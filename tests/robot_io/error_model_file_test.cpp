@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Error-model files of the simulated test beds: round trip, partial files over the defaults,
 // YAML, and one-line errors naming the file, key (and line for YAML).
 #include "vrreg/robot_io/error_model_file.hpp"

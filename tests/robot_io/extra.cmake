@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # vrreg export's URDF is read back with urdfdom (Debian liburdfdom-dev), a test-only oracle; its
 # YAML with yaml-cpp (robot_io links it).
 find_package(urdfdom REQUIRED)

@@ -1,4 +1,5 @@
-// Hostile robot and error-model documents (issue 13): deep nesting, YAML alias bombs, numbers
+// SPDX-License-Identifier: Apache-2.0
+// Hostile robot and error-model documents: deep nesting, YAML alias bombs, numbers
 // beyond a double and invalid UTF-8 end in one FileError naming the file, never a crash, a runaway
 // or a raw library message.
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
-// vrreg export (issue 11): every format parses back, with an independent reader, to the model's
+// SPDX-License-Identifier: Apache-2.0
+// vrreg export: every format parses back, with an independent reader, to the model's
 // transform and marker offset, and says which way the transform goes.
 #include "vrreg/robot_io/model_export.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Acquisition of the paper's datasets: counts, exact rigidity without errors, determinism,
 // controller behaviour (UR nearest solution, LWR four configurations) and noise levels.
 #include "vrreg/simulation/acquisition.hpp"

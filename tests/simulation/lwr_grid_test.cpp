@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The KUKA LWR 4+ grid: serpentine path of unit steps, four configurations per location in the
 // analytic IK's order (which changes over part of the volume, never at random), joints recorded.
 #include <algorithm>

@@ -1,4 +1,5 @@
-// A simulated cell whose marker sits off the controller's tool (issue 11): the tracker sees the
+// SPDX-License-Identifier: Apache-2.0
+// A simulated cell whose marker sits off the controller's tool: the tracker sees the
 // real marker, the file keeps the controller's TCP, and without the option nothing changes.
 #include "simulation_test_support.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Measuring a plan on a simulated test bed (`vrreg simulate --plan`): the robot takes the plan's
 // joints, so a perfect robot and tracker read back exactly the plan's positions; labels, roles and
 // config are kept; a plan for another tool or robot, or a broken plan, is refused.

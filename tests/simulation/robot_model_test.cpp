@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The robot error model (DH errors, transmission error, repeatability, gravity compliance) and the
 // tracker model.
 #include <cmath>

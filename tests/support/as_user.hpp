@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Runs a check as an unprivileged user, for the permission cases root would bypass.
 #include <grp.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers for the io tests: a scratch directory per test and checks on FileError messages.
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The joint-space error model (issue 12) on simulated test-bed cells: register all fiducials,
+// The joint-space error model on simulated test-bed cells: register all fiducials,
 // fit the model to their observed errors, correct the targets, and compare with the noise floor
 // (the same registration corrected by the robot's true systematic error).
 #include <Eigen/Core>

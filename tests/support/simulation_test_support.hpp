@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared fixtures of the simulation tests: error models with parts switched off.
 #include "vrreg/simulation/testbed.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A small synthetic cell for Procedure 2 (paper section 4.4) tests: a 5 x 5 x 5 grid (20 mm) of
 // nominal points, each measured in two arm configurations A and B whose robot errors differ

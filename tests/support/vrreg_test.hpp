@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared test helpers: EXPECT_EIGEN_NEAR and seeded point generators.
 #include <cstdlib>

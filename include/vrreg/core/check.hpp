@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Bad caller input throws InputError with the offending values in the message (design.md 7).
 #include <sstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Errors in input files: the message names the file and, where there is one, the line. In core so
 // that every module that knows where its input came from can name it (design.md 7).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Number formatting for messages, tables and files: one place (fmt underneath), so that every
 // command and report prints a length the same way. Lengths come in metres (SI inside) and are

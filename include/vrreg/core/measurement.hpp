@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A measurement set: locations measured in both frames, after averaging repeat readings.
 // Plain data shared by io (which fills it) and the domain modules (which read it).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Seeded random numbers that give the same bytes on every platform: std::normal_distribution is
 // implementation-defined, so the Gaussian is drawn here from the raw 64-bit engine.

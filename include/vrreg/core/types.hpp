@@ -1,8 +1,11 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Point sets, rigid transforms and similarities. SI inside the library: metres, radians
 // (design.md 1).
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
+#include "vrreg/config.hpp"
 
 namespace vrreg {
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Unit conversions. Only io/ and the command line convert; the library is SI throughout.
 #include <numbers>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Beyond the paper (`vrreg reproduce --beyond`, docs/reproduction.md): on the simulated datasets,
 // the paper's RRBC row beside the field models (linear, trilinear, rbf, kriging, joint, auto),
@@ -46,10 +47,10 @@ struct BeyondOptions {
   std::uint64_t seed = 1;
   bool ur5 = true;   ///< A1, A2, B, A1 thinned, A1 cube of 27
   bool lwr4 = true;  ///< the KUKA grid, per configuration
-  std::optional<simulation::TestbedErrorModel> ur5_errors;
-  std::optional<simulation::TestbedErrorModel> lwr4_errors;
+  std::optional<simulation::TestbedErrorModel> ur5_errors{};
+  std::optional<simulation::TestbedErrorModel> lwr4_errors{};
   /// The field methods to run; empty: all of beyond_field_methods() (tests pick cheap ones).
-  std::vector<InterpolationMethod> methods;
+  std::vector<InterpolationMethod> methods{};
 };
 
 /// The field methods of the table, in printed order.

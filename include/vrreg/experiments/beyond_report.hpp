@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Beyond the paper as cells (reproduction_cells.hpp: "/beyond/<dataset>/<method>/cor_rms_t_mm"
 // ...), as text (one table per dataset) and as beyond.csv; mean +- sd over seeds like the others.

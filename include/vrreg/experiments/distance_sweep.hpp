@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Dataset B (paper sections 4.1, 4.3, 5.1; Figures 7-11): one registration from all fiducials,
 // then every target corrected from the octuplet of each cube size in turn (weights 1/8), giving

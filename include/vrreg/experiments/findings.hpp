@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The paper's findings (sections 5.1, 5.2; issue 5's acceptance) checked on a reproduction:
+// The paper's findings (sections 5.1, 5.2) checked on a reproduction:
 // gamma(A2) > gamma(A1); corrected RMS_T falls with d (Spearman >= 0.9, Figure 7); N_bad(d_min) <
 // N_bad(d_max) (Figure 8); Strategies 2 and 3 beat Strategy 1 wherever configurations were
 // switched; Strategy 3 has the largest gamma; corrected RMS_T is uniform over the configurations
@@ -42,7 +43,7 @@ struct FindingRate {
   std::vector<bool> met;       ///< per seed
   /// n_met / n_evaluated (0 when none was evaluated).
   [[nodiscard]] double rate() const;
-  /// The acceptance rule of issue 5: met on >= 80 % of the seeds evaluated.
+  /// Met on >= 80 % of the seeds evaluated: one unlucky simulated robot does not fail a finding.
   [[nodiscard]] bool accepted() const;
 };
 

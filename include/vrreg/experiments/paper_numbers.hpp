@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The paper's numbers (Table 1, section 5.1, Table 2, section 5.2), the project's own copy of
 // paper-results.json, printed beside the reproduction's. Units as printed in the paper: mm for

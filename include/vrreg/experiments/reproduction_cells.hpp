@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A reproduction as a flat list of named numbers ("cells"), each named by its JSON pointer in
 // `vrreg reproduce --json` (e.g. "/table1/A1/cor_rms_t_mm", "/table2/3/gamma_percent"), so that
@@ -30,12 +31,12 @@ std::vector<Cell> reproduction_cells(const Reproduction& r);
 
 /// A cell over seeds.
 struct CellSummary {
-  std::string pointer;
+  std::string pointer{};
   CellKind kind = CellKind::kValue;
-  double mean = 0.0;  ///< NaN when undefined on some seed
-  double sd = 0.0;    ///< sample sd over seeds (0 for one seed)
+  double mean = 0.0;    ///< NaN when undefined on some seed
+  double sd = 0.0;      ///< sample sd over seeds (0 for one seed)
   double median = 0.0;  ///< median over seeds (mean of the middle two for an even count)
-  int n = 0;          ///< seeds
+  int n = 0;            ///< seeds
 };
 
 /// All cells over seeds, in the order of the first seed's cells.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The data of the reproduced tables and figures as CSV text (mm, percent), one file each:
 // Table 1, Figures 7-8 and Table 2 (= Figures 14-15) from the cells (mean and sd over seeds, paper

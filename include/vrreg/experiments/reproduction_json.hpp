@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `vrreg reproduce --json` and reproduce.json (format "vrreg-reproduce", version 1): the cells of
 // Table 1, dataset B / Figure 7, the KUKA summary and Table 2 (numbers for one seed, {"mean",

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // `vrreg reproduce` as text: Table 1, the Figure 7-8 data and Table 2 beside the paper's numbers
 // (paper_numbers.hpp), mean +- sd over seeds when there are several, and the findings.

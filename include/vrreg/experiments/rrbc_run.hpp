@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One pass of the paper's pipeline on measured locations (sections 4.3, 4.4): register the
 // fiducials (Eq. 2), rigid-body condition (Eq. 1), noise (Eq. 9), RRBC-correct the targets
@@ -15,10 +16,10 @@ namespace vrreg::experiments {
 
 /// How to run the pipeline.
 struct RrbcRunOptions {
-  InterpolationSettings interpolation;  ///< e.g. octuplet with a cube edge
-  double sigma_rep_m = 0.0;             ///< robot repeatability for sigma_noise (Eq. 9) [m]
+  InterpolationSettings interpolation{};  ///< e.g. octuplet with a cube edge
+  double sigma_rep_m = 0.0;               ///< robot repeatability for sigma_noise (Eq. 9) [m]
   /// sigma_opt to use instead of the fiducials' repeat readings (e.g. K = 1) [m].
-  std::optional<double> sigma_opt_m;
+  std::optional<double> sigma_opt_m{};
   bool rigid_body_statistics = true;  ///< compute sigma_L (all pairs; the slow part)
   /// > 0: also the histogram of L_ij (Eq. 1, Fig. 4-6) in bins of this width [m], spanning the
   /// observed range (edges at multiples of the width). Needs rigid_body_statistics.

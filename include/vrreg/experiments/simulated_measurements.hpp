@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A simulated dataset seen the way a measurement file is read (design.md 6): one location per
 // visit with its repeat readings averaged, in visiting order.

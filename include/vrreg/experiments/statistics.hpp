@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Small statistics for the reproduction: mean and standard deviation over seeds, and Spearman's
 // rank correlation (the "corrected RMS_T falls as d falls" finding of section 5.1, Figure 7).

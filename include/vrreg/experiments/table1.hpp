@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Table 1 (paper sections 4.3, 5.1): one UR5 grid dataset (A1 or A2) through the pipeline with
 // octuplet corrections of edge a, so that every target sits at d = sqrt(3)/2 a from its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Table 2 (paper sections 4.4, 5.2; Figures 5, 6, 12-15): the KUKA grid, each location measured in
 // every arm configuration, processed per configuration m by Strategy 1 (labels as the IK listed

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
-// Calibration of the simulated test beds against the paper (issue 4, design.md 5): simulate the
+// Calibration of the simulated test beds against the paper (design.md 5): simulate the
 // datasets for a list of seeds, run the paper's pipeline on each and compare the medians with
 // the acceptance bands (UR5 Table 1 and section 5.1, KUKA Table 2 Strategy 1).
 #include <array>
@@ -16,8 +17,8 @@ namespace vrreg::experiments {
 /// What to run.
 struct CalibrationOptions {
   std::vector<std::uint64_t> seeds = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
-  std::optional<simulation::TestbedErrorModel> ur5_errors;   ///< empty: the test bed's defaults
-  std::optional<simulation::TestbedErrorModel> lwr4_errors;  ///< empty: the test bed's defaults
+  std::optional<simulation::TestbedErrorModel> ur5_errors{};   ///< empty: the test bed's defaults
+  std::optional<simulation::TestbedErrorModel> lwr4_errors{};  ///< empty: the test bed's defaults
   bool ur5 = true;
   bool lwr4 = true;
 };
@@ -46,8 +47,8 @@ struct Lwr4SeedFigures {
 
 /// Everything a calibration run produced.
 struct CalibrationReport {
-  std::vector<Ur5SeedFigures> ur5;
-  std::vector<Lwr4SeedFigures> lwr4;
+  std::vector<Ur5SeedFigures> ur5{};
+  std::vector<Lwr4SeedFigures> lwr4{};
 };
 
 /// Simulates A1, A2 and B of the UR5 test bed for `seed` and runs the pipeline on them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Output files are written whole or not at all (design.md 6), and never replace anything but a
 // regular file: docs/file-formats.md, "How outputs are written".

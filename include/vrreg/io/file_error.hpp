@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // io's name for vrreg::FileError (core/file_error.hpp), which every reader throws.
 #include "vrreg/core/file_error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Input files are regular files: a FIFO with no writer would block the reader forever, a device
 // never ends, a directory is not a file. Every reader opens its file through here.

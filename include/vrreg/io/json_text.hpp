@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // JSON documents read from files, within stated limits (docs/file-formats.md): a hostile or broken
 // file ends in a one-line FileError naming it, never a crash or a runaway.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reads measurement CSV files (design.md 6) into a MeasurementSet in SI units.
 //

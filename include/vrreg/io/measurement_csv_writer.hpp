@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Writes individual readings (not averaged) as a measurement CSV (design.md 6) in millimetres and
 // radians, with numbers in the shortest text that reads back exactly; read_measurement_csv reads

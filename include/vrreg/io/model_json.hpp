@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The registration model file (`register -o model.json`): JSON with "format": "vrreg-model",
 // "version": 1, "units": {"length": "mm", "angle": "rad"}, rotation (3x3 rows), translation_mm,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A command never writes over its own input: measurements cost hours of robot time.
 #include <string>

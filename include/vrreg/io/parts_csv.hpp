@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Reads the part points of Procedure 1 (paper section 6, Fig. 16; `vrreg plan --parts`).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Plan file of Procedure 1 (paper section 6; written by `vrreg plan`, to be measured by a robot
 // program or `vrreg simulate --plan`): the locations to visit, one row each, in visiting order.

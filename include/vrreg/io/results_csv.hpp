@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The result files of evaluate and correct (docs/file-formats.md): per-target errors and
 // corrected robot-frame positions, in mm, written whole or not at all.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Stable labels of arm configurations: what an IK branch is, independent of the order in which a
 // solver returns it. The index is what measurement files store in their `config` column.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Strategy 2 of Procedure 2 (paper section 4.4): relabel the arm configurations of the nominal
 // points along the visiting path, so that one label means a similar arm from point to point.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One row of a standard (distal) Denavit-Hartenberg table and the link transform it defines.
 #include <Eigen/Geometry>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Forward kinematics and the geometric Jacobian as free functions of an immutable chain.
 #include <Eigen/Core>

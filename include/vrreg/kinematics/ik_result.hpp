@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Options in, result out for every analytic IK solver. Unreachable poses and singular cases are
 // values in the result, never exceptions; bad caller input throws InputError (design.md 7).
@@ -66,8 +67,8 @@ struct IkSolution {
 /// All solutions of one query, ordered by configuration index.
 struct IkResult {
   IkStatus status = IkStatus::kUnreachable;
-  std::string message;  ///< why there is no solution (empty when ok)
-  std::vector<IkSolution> solutions;
+  std::string message{};  ///< why there is no solution (empty when ok)
+  std::vector<IkSolution> solutions{};
   std::uint8_t singular = kNoSingularity;  ///< union of the flags of all branches
   int n_outside_limits = 0;                ///< branches dropped by the joint limits
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One entry point over the analytic solvers, chosen by the chain's family.
 #include <Eigen/Geometry>

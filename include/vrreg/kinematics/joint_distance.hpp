@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Distances between arm configurations in joint space, with angle wrapping, and selection of the
 // nearest configuration (paper section 4.4, Strategies 2 and 3; design.md section 4).

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
-// A joint-space model of a robot's positioning error (issue 12), fitted to fiducials by linear
+// A joint-space model of a robot's positioning error, fitted to fiducials by linear
 // least squares through the robot's Jacobian, as in kinematic calibration (Mooring, Roth &
 // Driels 1991; Hollerbach & Wampler 1996), extended by smooth per-joint angle-error functions
 // (Legendre polynomials over each joint's observed range) and a quadratic Cartesian trend.
@@ -37,15 +38,15 @@ struct JointPeriodicTerm {
 struct JointErrorModelOptions {
   /// Legendre degree of each joint's angle-error function (0: a constant offset only). Empty:
   /// chosen per joint by K-fold cross-validation among 0..max_joint_degree.
-  std::vector<int> joint_degrees;
+  std::vector<int> joint_degrees{};
   int max_joint_degree = 40;  ///< largest degree the automatic choice tries
   /// Periodic terms of the joint-angle errors. Empty: found from the fiducials when the degrees
   /// are chosen automatically (a periodogram of what a smooth model leaves, at most
   /// max_periodic_terms, the set kept only if it lowers the cross-validated RMS).
-  std::vector<JointPeriodicTerm> periodic_terms;
+  std::vector<JointPeriodicTerm> periodic_terms{};
   int max_periodic_terms = 6;  ///< 0: no periodic terms unless given
-  bool dh_deltas = true;      ///< a, d, alpha deltas of every DH row
-  bool marker_offset = true;  ///< a 3-vector delta of the marker's flange offset
+  bool dh_deltas = true;       ///< a, d, alpha deltas of every DH row
+  bool marker_offset = true;   ///< a 3-vector delta of the marker's flange offset
   int trend_degree = 2;  ///< Cartesian trend per axis: -1 none, 0 constant, 1 linear, 2 quadratic
   /// Gauss-Newton iterations with the exact perturbed-chain kinematics after the first-order
   /// solve, each kept only if it lowers the residual (else the model stays first-order: linear

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Joint vectors and angle arithmetic shared by every kinematics function. SI: radians.
 #include <Eigen/Core>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Everything of the kinematics module in one include.
 #include "vrreg/kinematics/configuration_label.hpp"

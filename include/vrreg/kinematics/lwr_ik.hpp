@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Closed-form IK of the KUKA LWR 4+ (7R, spherical shoulder and wrist) parametrised by the arm
 // angle psi (Shimizu et al. 2008; Faria et al. 2018). Structure required (ChainFamily::kLwr):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Feasible arm angles of the KUKA LWR 4+ for one pose, per global configuration, under the joint
 // limits (the analytic counterpart of Faria et al. 2018). psi as defined in lwr_ik.hpp.
@@ -20,10 +21,10 @@ struct PsiInterval {
 /// Feasible arm angles of one pose, per global configuration (index = label index).
 struct PsiIntervalsResult {
   IkStatus status = IkStatus::kUnreachable;
-  std::string message;
+  std::string message{};
   /// For each configuration index 0..7 the sorted disjoint intervals where every joint is within
   /// its limits. A range across psi = pi appears as [.., pi] and [-pi, ..].
-  std::array<std::vector<PsiInterval>, 8> intervals;
+  std::array<std::vector<PsiInterval>, 8> intervals{};
   std::uint8_t singular = kNoSingularity;  ///< kElbowSingular / kArmAngleSingular of the pose
   [[nodiscard]] bool ok() const { return status == IkStatus::kOk; }
 };

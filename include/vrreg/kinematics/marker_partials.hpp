@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Partial derivatives of a marker point's robot-frame position with respect to the joint angles
 // and the standard DH parameters (a, d, alpha) of every row and the marker's flange offset: the

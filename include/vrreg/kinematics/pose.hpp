@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Pose helpers: roll-pitch-yaw angles and checks that a matrix is a rotation.
 #include <Eigen/Geometry>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Nominal parameter sets of the robots the paper and its users work with (design.md section 4).
 // Base = DH base frame and TCP = flange in all of them; joint limits are the manufacturer's.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // An immutable serial chain of revolute and prismatic joints: DH table, joint limits, base and tool
 // transforms (from a DH robot file, or from any URDF chain, see joint_chain.hpp).

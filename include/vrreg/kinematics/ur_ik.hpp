@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Closed-form IK of Universal Robots arms (UR3/5/10, e-Series): every solution, up to 8.
 // Structure required (ChainFamily::kUr): alpha = [pi/2, 0, 0, pi/2, -pi/2, 0], a1 = a4 = a5 = a6 =

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Registration errors: TRE per target (Eq. 3), RMS_T (Eq. 4), FRE (Eq. 2).
 #include <Eigen/Core>

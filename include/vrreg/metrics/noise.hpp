@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Noise level from repeat readings and the rho criterion (paper section 4.3, Eq. 9).
 #include <optional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The rigid-body condition (Eq. 1): L_ij = ||X_i - X_j|| - ||Y_i - Y_j|| over all J(J-1)/2 pairs,
 // exactly (no sampling), on both cores.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // sigma_L (Eq. 1) for large fiducial sets: the exact statistic has J(J-1)/2 pairs (5e11 at a
 // million fiducials), so above a size it is estimated from a seeded uniform sample of pairs, with

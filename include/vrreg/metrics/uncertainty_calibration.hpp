@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Whether predicted uncertainties are honest: measured errors against their predicted sd.
 #include <Eigen/Core>

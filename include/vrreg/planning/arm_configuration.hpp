@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Arm configurations for a plan (paper section 6 with section 4.4): each part point is reached by
 // an IK solution of a fixed tool orientation, and each of its fiducials by the IK solution nearest
@@ -24,7 +25,7 @@ struct ArmConfigurationOptions {
   double psi_rad = 0.0;  ///< LWR arm angle for every location [rad] (UR: unused)
   /// Part points take the IK solution nearest these joints [rad] (2 pi shifts included); when
   /// absent, the first solution within the limits in configuration-label order.
-  std::optional<kinematics::JointVector> home_q_rad;
+  std::optional<kinematics::JointVector> home_q_rad{};
   /// Throws InputError on a non-proper rotation, a non-finite psi, or home joints that do not fit
   /// `chain`; and when `chain` has no analytic IK (neither UR nor LWR structure).
   void validate(const kinematics::SerialChain& chain) const;

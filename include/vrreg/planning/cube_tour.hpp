@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Order of the M fiducial cubes (paper section 6): the cube sequence and each cube's serpentine
 // variant chosen to keep the travel between cubes (last node of one cube to the first of the

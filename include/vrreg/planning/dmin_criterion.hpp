@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The lower limit on the target-fiducial distance (paper section 6, Eq. 9): RRBC helps only when
 // rho > 2.5, so the nearest fiducials must be farther than 2.5 sigma_noise from the target.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Procedure 1 (paper section 6, Fig. 16): the cube of fiducials measured around one part point.
 //

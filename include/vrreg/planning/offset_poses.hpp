@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Poses that make the marker offset observable (hand-eye registration, docs/hand-eye.md): with one
 // fixed tool orientation the marker's position on the flange cannot be told from the registration's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Procedure 1, "where to measure" (paper section 6, Fig. 16): for M part points whose placement
 // varies within +-S, a cube of fiducials on a grid of spacing A around each (fiducial_grid.hpp),
@@ -32,7 +33,7 @@ struct PlanOptions {
   double spacing_m = 0.0;                    ///< grid spacing A [m]
   double sigma_noise_m = kPaperSigmaNoiseM;  ///< noise level for Eq. 9 [m]
   bool force = false;                        ///< plan even when Eq. 9 fails
-  ArmConfigurationOptions arm;               ///< tool orientation, norm, psi, home joints
+  ArmConfigurationOptions arm{};             ///< tool orientation, norm, psi, home joints
   long long max_locations = 100'000;         ///< refuse larger plans (a robot visits each one)
   /// Throws InputError on a bad field (see the members) for `chain`.
   void validate(const kinematics::SerialChain& chain) const;
@@ -80,15 +81,15 @@ struct UnreachableLocation {
 /// The plan, or which locations cannot be reached (then `locations` is empty).
 struct PlanResult {
   PlanStatus status = PlanStatus::kOk;
-  std::string message;  ///< why not ok (names the first unreachable locations)
-  CubeGeometry cube;
-  DminCheck dmin;
-  std::vector<PartPlan> parts;                   ///< in input order
-  std::vector<PlannedLocation> locations;        ///< in visiting order
-  std::vector<UnreachableLocation> unreachable;  ///< every location without joints
-  std::vector<std::array<int, 2>> overlapping;   ///< part pairs whose cubes overlap or touch
-  double within_cubes_m = 0.0;                   ///< travel inside the cubes [m]
-  double between_cubes_m = 0.0;                  ///< travel between cubes, planned order [m]
+  std::string message{};  ///< why not ok (names the first unreachable locations)
+  CubeGeometry cube{};
+  DminCheck dmin{};
+  std::vector<PartPlan> parts{};                   ///< in input order
+  std::vector<PlannedLocation> locations{};        ///< in visiting order
+  std::vector<UnreachableLocation> unreachable{};  ///< every location without joints
+  std::vector<std::array<int, 2>> overlapping{};   ///< part pairs whose cubes overlap or touch
+  double within_cubes_m = 0.0;                     ///< travel inside the cubes [m]
+  double between_cubes_m = 0.0;                    ///< travel between cubes, planned order [m]
   double naive_between_cubes_m = 0.0;  ///< the same for input order, serpentine variant 0 [m]
   [[nodiscard]] bool ok() const { return status == PlanStatus::kOk; }
 };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Procedure 2 (paper section 4.4): how a model treats the robot's arm configurations.
 #include <cstddef>

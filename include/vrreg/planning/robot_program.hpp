@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A plan as a program the robot runs to collect the data (docs/hand-eye.md): each location in
 // visiting order, a joint move, a settling pause, and a stop until the tracker's readings are

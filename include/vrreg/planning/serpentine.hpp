@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Visiting order inside one fiducial cube (paper section 4.2, Fig. 2): a 3D serpentine
 // (boustrophedon) whose consecutive nodes are always one grid step apart.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Strategy 3 of Procedure 2 (paper section 4.4), correction half: for every target, each of the 8
 // fiducials at the corners of the cube around it (Eq. 7, weights 1/8) is taken in the arm

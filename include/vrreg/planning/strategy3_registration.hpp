@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Strategy 3 of Procedure 2 (paper section 4.4), registration half: one registration {R, tau}
 // for every arm configuration, from the 8 fiducials at the corners of the whole work volume, each
@@ -15,7 +16,7 @@ namespace vrreg::planning {
 struct Strategy3Options {
   std::uint64_t seed = 1;  ///< seeds vrreg::Random, which picks each corner's configuration
   double match_tolerance_m = 1e-6;  ///< how far a fiducial may be from a corner position [m]
-  RegistrationOptions registration;
+  RegistrationOptions registration{};
   /// Throws InputError on a tolerance that is not > 0 or on bad registration options.
   void validate() const;
 };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Expected registration errors for isotropic, independent fiducial localisation error (FLE),
 // Fitzpatrick, West and Maurer, IEEE TMI 17(5), 1998.

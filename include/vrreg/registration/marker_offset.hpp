@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Registration with an unknown marker offset (robot-sensor hand-eye calibration): from flange
 // poses and the marker positions the sensor measured there, T_robot_sensor = {R, tau} and the
@@ -49,8 +50,8 @@ const char* to_string(MarkerOffsetStatus status);
 /// What estimate_marker_offset found.
 struct MarkerOffsetResult {
   MarkerOffsetStatus status = MarkerOffsetStatus::kOk;
-  std::string message;            ///< why, when not kOk
-  RigidTransform T_robot_sensor;  ///< Y ~ R X + tau (Eq. 2), sensor -> robot
+  std::string message{};            ///< why, when not kOk
+  RigidTransform T_robot_sensor{};  ///< Y ~ R X + tau (Eq. 2), sensor -> robot
   Eigen::Vector3d p_flange_marker_m = Eigen::Vector3d::Zero();  ///< marker in the flange frame
   /// Standard uncertainties, per axis, from the Jacobian and the residual variance (s^2 (J'J)^-1).
   Eigen::Vector3d p_std_m = Eigen::Vector3d::Zero();            ///< of p, flange axes [m]
@@ -58,9 +59,9 @@ struct MarkerOffsetResult {
   Eigen::Vector3d rotation_std_rad = Eigen::Vector3d::Zero();   ///< of R (small angles, robot axes)
   /// Covariance of (rotation increment [rad], tau [m], p [m]), 9 x 9.
   Eigen::Matrix<double, 9, 9> covariance = Eigen::Matrix<double, 9, 9>::Zero();
-  double fre_m = 0.0;           ///< RMS residual distance (FRE, Eq. 2 with the offset)
-  double sigma_m = 0.0;         ///< residual standard deviation per coordinate, dof-corrected
-  Eigen::VectorXd residuals_m;  ///< ||R y_j + tau - T_robot_flange_j p|| per pose
+  double fre_m = 0.0;             ///< RMS residual distance (FRE, Eq. 2 with the offset)
+  double sigma_m = 0.0;           ///< residual standard deviation per coordinate, dof-corrected
+  Eigen::VectorXd residuals_m{};  ///< ||R y_j + tau - T_robot_flange_j p|| per pose
   /// sqrt of the smallest eigenvalue of I - M'M, M the mean flange rotation: ~ the RMS tilt [rad]
   /// about the worst axis. 0 when every pose has one orientation (p cannot be told from tau).
   double orientation_spread = 0.0;
@@ -75,7 +76,7 @@ struct MarkerOffsetResult {
   Eigen::Quaterniond q_flange_marker = Eigen::Quaterniond::Identity();
   Eigen::Vector3d marker_rotation_std_rad = Eigen::Vector3d::Zero();
   double sigma_rad = 0.0;
-  Eigen::VectorXd rotation_residuals_rad;
+  Eigen::VectorXd rotation_residuals_rad{};
   [[nodiscard]] bool ok() const { return status == MarkerOffsetStatus::kOk; }
 };
 

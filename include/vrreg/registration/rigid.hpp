@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Point-based rigid registration (paper Eq. 2): least squares via the SVD of the 3x3
 // cross-covariance, always a proper rotation, optional uniform scale.
@@ -29,24 +30,23 @@ struct RegistrationOptions {
 struct RegistrationResult {
   /// Maps sensor points onto robot points: Y ~ R X + tau (a similarity only with estimate_scale;
   /// T_robot_sensor.rigid() is the rigid transform otherwise).
-  SimilarityTransform T_robot_sensor;
-  double fre_m = 0.0;                   ///< FRE, Eq. 2 (weighted RMS when weights are given)
-  Eigen::VectorXd residuals_m;          ///< ||R X_j + tau - Y_j|| per point (if options.residuals)
+  SimilarityTransform T_robot_sensor{};
+  double fre_m = 0.0;             ///< FRE, Eq. 2 (weighted RMS when weights are given)
+  Eigen::VectorXd residuals_m{};  ///< ||R X_j + tau - Y_j|| per point (if options.residuals)
   /// RMS spread of the fiducials along the principal axes, largest first [m]: sqrt of the singular
   /// values of the centred cross-covariance / J (exactly the point set's spread for rigid data).
   /// A small third value means a nearly planar layout, a small second one a nearly collinear one.
   Eigen::Vector3d spread_m = Eigen::Vector3d::Zero();
-  double collinearity = 0.0;            ///< spread_m(1) / spread_m(0): 0 for collinear points
+  double collinearity = 0.0;  ///< spread_m(1) / spread_m(0): 0 for collinear points
 };
 
-/// Registers sensor points onto robot points (Eq. 2): minimises sum_j w_j ||s R X_j + tau - Y_j||^2.
-/// points_sensor_m, points_robot_m: corresponding points [m]; weights: one non-negative value per
-/// point, or empty for equal weights. Throws InputError for fewer than 3 points, non-finite values,
-/// mismatched sizes or collinear / coincident points.
-RegistrationResult register_rigid(const ConstPoints3Ref& points_sensor_m,
-                                  const ConstPoints3Ref& points_robot_m,
-                                  const RegistrationOptions& options = {},
-                                  const Eigen::Ref<const Eigen::VectorXd>& weights =
-                                      Eigen::VectorXd());
+/// Registers sensor points onto robot points (Eq. 2): minimises sum_j w_j ||s R X_j + tau -
+/// Y_j||^2. points_sensor_m, points_robot_m: corresponding points [m]; weights: one non-negative
+/// value per point, or empty for equal weights. Throws InputError for fewer than 3 points,
+/// non-finite values, mismatched sizes or collinear / coincident points.
+RegistrationResult register_rigid(
+    const ConstPoints3Ref& points_sensor_m, const ConstPoints3Ref& points_robot_m,
+    const RegistrationOptions& options = {},
+    const Eigen::Ref<const Eigen::VectorXd>& weights = Eigen::VectorXd());
 
 }  // namespace vrreg

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The report of a user's own cell (issue 6; `vrreg report --model M --targets T`): the paper's
+// The report of a user's own cell (`vrreg report --model M --targets T`): the paper's
 // kinds of figures for their data (L histogram, TRE per target, RMS_T per configuration, the 3D
 // volume with RRBC's failures, the Delta TRE histogram) and a verdict in words (rho against 2.5,
 // gamma, N_bad and where the bad targets are).

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The report page (issue 6): sections of text, tables and Plotly charts, rendered to ONE
+// The report page: sections of text, tables and Plotly charts, rendered to ONE
 // self-contained HTML document with the charting library inlined, so that it opens offline and no
 // request leaves the machine. Plain data: the experiments build pages, the CLI writes them.
 #include <nlohmann/json.hpp>

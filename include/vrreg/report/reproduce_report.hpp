@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
-// The report of the paper's experiments (issue 6; `vrreg report --reproduce DIR`): Tables 1-2
+// The report of the paper's experiments (`vrreg report --reproduce DIR`): Tables 1-2
 // beside the paper's numbers and Figures 4-8, 10-16 from what `vrreg reproduce --out DIR` wrote
 // into DIR/reproduce.json (the contract is docs/report.md). Sections whose data is absent are
 // listed as missing instead of drawn.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Error-model files of the simulated test beds (vrreg simulate --errors / --write-errors): the
 // robot's error spreads and the tracker, in JSON or YAML, units in every key. Absent keys keep

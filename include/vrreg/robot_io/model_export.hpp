@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A registration model in the formats robot cells use (`vrreg export`, docs/hand-eye.md):
 // easy_handeye-style YAML (x y z qx qy qz qw in metres), a URDF fixed joint, or plain JSON with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Robot files: a serial chain (calibrated DH table, joint limits, tool and base offsets) in JSON
 // or YAML. Units are part of every key (_m / _mm, _rad / _deg); unknown keys are errors.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A simulated dataset as a measurement CSV (design.md 6): one row per tracker reading in visiting
 // order, joints and (LWR) configuration labels included, and a comment header that states the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Acquisition of a dataset on a simulated test bed (paper sections 4.1, 4.2): the controller
 // turns each nominal location into joints with the nominal model, the robot lands where its
@@ -18,8 +19,8 @@ namespace vrreg::simulation {
 
 /// What to simulate beyond the test bed and dataset.
 struct SimulationOptions {
-  std::uint64_t seed = 1;                   ///< decides the robot (DH errors, phases) and noise
-  std::optional<TestbedErrorModel> errors;  ///< empty: the test bed's defaults
+  std::uint64_t seed = 1;                     ///< decides the robot (DH errors, phases) and noise
+  std::optional<TestbedErrorModel> errors{};  ///< empty: the test bed's defaults
   /// Where the tracked marker really sits in the flange frame [m]; empty: where the controller's
   /// tool says (the paper's precision mount). Set it to simulate a cell whose offset is unknown:
   /// the file's robot positions stay the controller's TCP, the tracker sees the real marker.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The order in which the KUKA's analytic IK module lists the configurations of one pose (paper
 // section 4.2: "in an arbitrary order"). The emulated module ranks them by joint-space distance

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A synthetic robot positioning error as a function of the nominal position: smooth (linear and
 // quadratic, like a mis-calibrated arm) plus wavy (periodic, like transmission error). For

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The paper's datasets as lists of nominal locations in visiting order (sections 4.1, 4.2):
 // UR5 A1 / A2 (regular grids, targets at odd grid indices), B (the A1 targets, each with ten

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Joint compliance under gravity: the deflection of each joint of a serial chain under the weight
 // of the links it carries, dq_i = tau_i / k_i (a smooth, configuration-dependent error).

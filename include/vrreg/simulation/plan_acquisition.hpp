@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Measuring a plan (Procedure 1, paper section 6; `vrreg simulate TESTBED --plan plan.csv`) on a
 // simulated test bed, so that a plan's accuracy can be predicted before the robot runs it: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How a simulated robot deviates from its nominal model (design.md 5): kinematic (DH) errors, a
 // periodic joint transmission error, per-visit repeatability and optional joint compliance under

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A robot as it really moves: the controller commands joints computed with the nominal model;
 // the arm takes those joints plus its transmission error and gravity deflection, and the TCP

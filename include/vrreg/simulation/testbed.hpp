@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The paper's two test beds (section 4): a UR5 and a KUKA LWR 4+, each carrying a tracked sphere
 // (the TCP) in a work volume seen by an OptiTrack-like tracker, with default error parameters

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // An OptiTrack-like motion tracker: a fixed sensor frame looking at the work volume from a
 // distance, Gaussian noise on every reading, K readings per visited location.

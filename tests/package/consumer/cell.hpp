@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The consumer's cell, in memory [m]: 27 fiducials on a 50 mm grid and 8 targets at its cube
 // centres, commanded to the robot (robot_m), seen by a camera 2 m away and turned 0.4 rad

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An outside program on the installed front door: register 27 fiducials and RRBC-correct 8
 // targets from in-memory arrays [m] (cell.hpp), print the robot positions to command [mm].
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The consumer's cell (cell.hpp) as a measurement CSV on stdout, for the command line to compare.
 #include <cstdio>
 
