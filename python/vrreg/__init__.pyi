@@ -262,13 +262,15 @@ def evaluate(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_A
              joints: Optional[_ArrayLike] = None, config: Optional[int] = None,
              interpolation: Optional[str] = None, cube_edge: Optional[float] = None,
              strategy: Optional[int] = None, joint_norm: Optional[str] = None,
-             arm: Optional[str] = None) -> EvaluateResult:
+             arm: Optional[str] = None, refit: bool = False,
+             exact: bool = False) -> EvaluateResult:
     """TRE and RMS_T uncorrected and corrected (Eq. 3, 4, 7, 8), gamma, N_bad. Metres."""
 def correct(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = None,
             *, names: Optional[Sequence[str]] = None, configs: Optional[_ArrayLike] = None,
             joints: Optional[_ArrayLike] = None, config: Optional[int] = None,
             interpolation: Optional[str] = None,
-            cube_edge: Optional[float] = None, arm: Optional[str] = None) -> CorrectResult:
+            cube_edge: Optional[float] = None, arm: Optional[str] = None, refit: bool = False,
+            exact: bool = False) -> CorrectResult:
     """RRBC-corrected robot-frame positions to command (Eq. 7, 8). Metres."""
 def read_measurements(path: str, *, require_robot: bool = True) -> Measurements: ...
 def load_model(path: str) -> Model: ...

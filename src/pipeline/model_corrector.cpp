@@ -82,13 +82,13 @@ Corrector corrector_for(const RegistrationModel& model, const CorrectorRequest& 
   const bool robot_changes =
       request.robot && (request.settings.method == InterpolationMethod::kJoint ||
                         request.settings.method == InterpolationMethod::kAuto);
-  const CorrectorData data = corrector_data(model, request.robot ? request.robot : model.robot);
+  const auto data = [&] { return corrector_data(model, request.robot ? request.robot : model.robot); };
   if (model.corrector && !request.refit && !robot_changes && answers(*model.corrector, options)) {
-    return request.exact ? model.corrector->exact(data) : *model.corrector;
+    return request.exact ? model.corrector->exact(data()) : *model.corrector;
   }
   CorrectorOptions fitted = options;
   fitted.tabulate = !request.exact;
-  return Corrector::fit(data, fitted);
+  return Corrector::fit(data(), fitted);
 }
 
 }  // namespace vrreg::pipeline_detail
