@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Orocos KDL peers of the kinematics benchmarks: a vrreg chain's DH table and a pose as KDL types.
 #include <Eigen/Geometry>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg's numerical IK beside Orocos KDL's LMA and NR_JL on chains no closed form covers: a UR5
 // with a 5 cm shoulder offset (6R), the 7-axis arm of tests/data/urdf/arm7.urdf (Panda-like
 // offsets) and the UR5 on a 2 m linear axis (tests/data/urdf/ur5_on_rail.urdf, 7 joints, one

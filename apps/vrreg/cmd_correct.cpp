@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg correct: RRBC-corrected robot-frame positions for points measured by the sensor
 // (Eq. 7, 8, then mapped with {R, tau}): what the robot should be commanded to.
 #include <cstdio>
@@ -5,6 +6,7 @@
 #include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "field_model_cli.hpp"
+#include "measurement_input.hpp"
 #include "robot_cli.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 #include "vrreg/io/model_json.hpp"
@@ -34,7 +36,7 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   options.exact = args.interpolation.exact;
   if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
   const CorrectResult r =
-      correct(model, io::read_measurement_csv(args.points, read_options), options);
+      correct(model, read_measurements(args.points, read_options), options);
   const TargetCorrection& c = r.correction;
   io::write_corrected_csv(args.output, r, args.model, args.points);
   const std::size_t n_points = r.names.size();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg evaluate: the true accuracy of a registration on independent targets: TRE and RMS_T
 // uncorrected and RRBC-corrected (Eq. 3, 4, 7, 8), gamma, N_bad and Delta TRE (section 5.1),
 // following the model's Procedure 2 strategy (section 4.4, strategy_cli.hpp).
@@ -6,6 +7,7 @@
 #include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "field_model_cli.hpp"
+#include "measurement_input.hpp"
 #include "robot_cli.hpp"
 #include "strategy_cli.hpp"
 #include "vrreg/core/units.hpp"
@@ -36,7 +38,7 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   options.exact = args.interpolation.exact;
   apply_evaluate_flags(args.strategy, options);
   if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
-  const EvaluateResult r = evaluate(model, io::read_measurement_csv(args.targets), options);
+  const EvaluateResult r = evaluate(model, read_measurements(args.targets), options);
   const ImprovementSummary& s = r.summary;
   const TargetCorrection& c = r.correction;
   const Eigen::VectorXd& unc = r.unc_tre_m;

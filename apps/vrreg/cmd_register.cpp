@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vrreg register: rigid registration of fiducials (Eq. 2), the rigid-body condition (Eq. 1),
 // noise (Eq. 9) and the RRBC fiducial corrections (Eq. 6), saved as a model for evaluate/correct;
 // with --strategy, Procedure 2's handling of arm configurations (section 4.4, strategy_cli.hpp).
@@ -7,6 +8,7 @@
 #include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "field_model_cli.hpp"
+#include "measurement_input.hpp"
 #include "robot_cli.hpp"
 #include "marker_offset_cli.hpp"
 #include "strategy_cli.hpp"
@@ -109,7 +111,7 @@ void run_register_unchecked(const RegisterArgs& args) {
     return;
   }
   const RegisterResult result =
-      register_fiducials(io::read_measurement_csv(args.fiducials), options);
+      register_fiducials(read_measurements(args.fiducials), options);
   const RegistrationModel& model = result.model;
   const RegistrationResult& reg = result.registration;
   const RigidBodyStatistics& rb = result.rigid_body;

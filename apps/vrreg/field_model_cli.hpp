@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared by evaluate, correct and register: printing the field models' cross-validation table
 // and predicted uncertainties (docs/field-models.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // register / evaluate / correct: the front door (include/vrreg/vrreg.hpp), one call each, on
 // arrays in metres or on a vrreg.Measurements read from a CSV (then exactly the command line's
 // numbers). Inputs are converted with the GIL held; the C++ call runs without it.

@@ -156,7 +156,8 @@ void bind_results(py::module_& m) {
       .value("OK", StencilStatus::kOk)
       .value("OUTSIDE_GRID", StencilStatus::kOutsideGrid)
       .value("OUTSIDE_HULL", StencilStatus::kOutsideHull)
-      .value("MISSING_CORNER", StencilStatus::kMissingCorner);
+      .value("MISSING_CORNER", StencilStatus::kMissingCorner)
+      .value("OUTSIDE_SUPPORT", StencilStatus::kOutsideSupport);
 
   py::class_<RegisterResult> reg(m, "RegisterResult", "What register found; lengths in metres.");
   reg.def_property_readonly(

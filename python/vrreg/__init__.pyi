@@ -26,6 +26,7 @@ class StencilStatus:
     OUTSIDE_GRID: StencilStatus
     OUTSIDE_HULL: StencilStatus
     MISSING_CORNER: StencilStatus
+    OUTSIDE_SUPPORT: StencilStatus
     __members__: ClassVar[dict[str, StencilStatus]]
     def __init__(self, value: int) -> None: ...
     def __int__(self) -> int: ...

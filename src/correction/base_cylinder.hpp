@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to correction: cylindrical coordinates about the robot's base axis (the robot frame's
 // z axis, joint 1 of the UR5 and the LWR 4+), in which a serial arm's position error is smooth

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A small deterministic quasi-Newton minimiser (BFGS, projected onto a box, Armijo
 // backtracking) for the handful of hyperparameters of the field models.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to correction: result buffers of many points (10^6 targets are ~230 MB of results).
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/correction/corner_candidates.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/correction/corrector.hpp"
 
 #include <tbb/blocked_range.h>
@@ -116,7 +117,7 @@ struct Corrector::Impl {
     if (fitted->has_own_sd()) p.sd_m.resize(n);
     const Points3 none(3, 0);
     const Eigen::MatrixXd no_joints(0, 0);
-    const MethodQuery query{at, none, no_joints, {}};
+    const MethodQuery query{at, none, no_joints, {}, true};
     const Eigen::Index block = std::max<Eigen::Index>(fitted->block_size(), 1);
     for (Eigen::Index begin = 0; begin < n; begin += block) {
       fitted->predict(query, begin, std::min(n, begin + block), p);
@@ -224,11 +225,13 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
     const detail::ExactField exact = [&m](const Points3& at, Points3& c, Eigen::VectorXd& s) {
       m.exact_predictions(at, c, s);
     };
-    detail::FieldTable table = detail::build_field_table(exact, data.fiducials_robot_m, data.noise_sd_m);
-    impl->fitted = detail::tabulated_method(std::move(table), fitted, impl->fitted->save(),
-                                            impl->fitted->describe(),
-                                            options.interpolation.match_tolerance_m);
-    impl->tabulated = true;
+    std::optional<detail::FieldTable> table =
+        detail::build_field_table(exact, data.fiducials_robot_m, data.noise_sd_m);
+    if (table) {
+      impl->fitted = detail::tabulated_method(std::move(*table), fitted, impl->fitted->save(),
+                                              impl->fitted->describe());
+      impl->tabulated = true;
+    }
   }
   return Corrector(std::move(impl));
 }
@@ -255,8 +258,7 @@ Corrector Corrector::restore(const SavedCorrector& saved, const CorrectorData& d
   impl->cv_rms_m = saved.cv_rms_m;
   impl->cv_squared_error_m2 = saved.cv_squared_error_m2;
   if (detail::is_tabulated(saved.state)) {
-    impl->fitted = detail::restore_tabulated(saved.state, saved.method,
-                                             saved.requested.match_tolerance_m);
+    impl->fitted = detail::restore_tabulated(saved.state, saved.method);
     impl->tabulated = true;
   } else {
     impl->fitted = correction_method(saved.method)

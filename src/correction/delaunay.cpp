@@ -1,12 +1,17 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/correction/delaunay.hpp"
 
 #include <libqhull_r/libqhull_r.h>
 
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <numeric>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "vrreg/core/check.hpp"
 
@@ -72,8 +77,20 @@ Tetrahedralization delaunay_tetrahedralization(const ConstPoints3Ref& points_m) 
                      "the " << n << " fiducials are coplanar (or collinear): scattered "
                             << "interpolation needs fiducials that span a volume");
 
+  // On a lattice the Delaunay tetrahedralization is not unique (8 co-spherical corners per cube)
+  // and qhull's choice follows the input order: the points go in sorted, so that the same
+  // fiducials give the same tetrahedra whatever order they were listed in.
+  std::vector<Eigen::Index> sorted(static_cast<std::size_t>(n));
+  std::iota(sorted.begin(), sorted.end(), Eigen::Index{0});
+  std::sort(sorted.begin(), sorted.end(), [&points_m](Eigen::Index a, Eigen::Index b) {
+    return std::make_tuple(points_m(0, a), points_m(1, a), points_m(2, a), a) <
+           std::make_tuple(points_m(0, b), points_m(1, b), points_m(2, b), b);
+  });
   // qhull keeps pointers into the coordinates: they live until the Qhull object is gone.
-  std::vector<coordT> coords(points_m.data(), points_m.data() + 3 * n);
+  std::vector<coordT> coords(static_cast<std::size_t>(3 * n));
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    for (int a = 0; a < 3; ++a) coords[3 * i + static_cast<std::size_t>(a)] = points_m(a, sorted[i]);
+  }
   MessageBuffer messages;
   Qhull qhull(messages.file());
   qhT* qh = qhull.get();
@@ -94,7 +111,7 @@ Tetrahedralization delaunay_tetrahedralization(const ConstPoints3Ref& points_m) 
       const auto* vertex = static_cast<vertexT*>(SETelem_(facet->vertices, k));
       const int id = qh_pointid(qh, vertex->point);
       valid = valid && id >= 0 && id < n;
-      vertices[static_cast<std::size_t>(k)] = id;
+      vertices[static_cast<std::size_t>(k)] = valid ? sorted[static_cast<std::size_t>(id)] : -1;
     }
     if (!valid) continue;
     tet_of_facet[facet->id] = static_cast<Eigen::Index>(out.vertices.size());

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Building blocks shared by the field models (kriging, RBF): the polynomial trend basis and
 // the stationary covariance functions with their length-scale derivatives.

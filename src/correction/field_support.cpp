@@ -1,9 +1,12 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks the field models share (method_support.hpp).
 #include <Eigen/QR>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <vector>
 
 #include "field_basis.hpp"
 #include "method_support.hpp"
@@ -15,7 +18,46 @@ namespace {
 /// Joint angles further apart than this at one nominal position are another arm configuration.
 constexpr double kSameConfigurationRad = 1e-3;
 
+/// The support's margin beyond the fiducials' box, as a fraction of the layout spacing.
+constexpr double kSupportMarginFraction = 0.25;
+
 }  // namespace
+
+double volume_spacing_m(const ConstPoints3Ref& points_m) {
+  if (points_m.cols() == 0) return 0.0;
+  const Eigen::Vector3d extent = points_m.rowwise().maxCoeff() - points_m.rowwise().minCoeff();
+  double volume = 1.0;
+  int dims = 0;
+  for (int a = 0; a < 3; ++a) {
+    if (extent(a) > 1e-9 * extent.maxCoeff()) {
+      volume *= extent(a);
+      ++dims;
+    }
+  }
+  return dims == 0 ? 0.0 : std::pow(volume / static_cast<double>(points_m.cols()), 1.0 / dims);
+}
+
+double layout_spacing_m(const ConstPoints3Ref& points_m) {
+  const Eigen::Index n = points_m.cols();
+  double spacing = volume_spacing_m(points_m);
+  const PointIndex index(points_m);
+  std::vector<double> nearest;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const std::vector<Eigen::Index> two = index.nearest_k(points_m.col(j), 2);
+    if (two.size() == 2) nearest.push_back((points_m.col(two[1]) - points_m.col(j)).norm());
+  }
+  if (!nearest.empty()) {
+    std::nth_element(nearest.begin(), nearest.begin() + static_cast<std::ptrdiff_t>(nearest.size() / 2),
+                     nearest.end());
+    spacing = std::max(spacing, nearest[nearest.size() / 2]);
+  }
+  return spacing > 0.0 ? spacing : 1e-3;
+}
+
+SupportBox field_support(const ConstPoints3Ref& fiducials_robot_m) {
+  return {fiducials_robot_m.rowwise().minCoeff(), fiducials_robot_m.rowwise().maxCoeff(),
+          kSupportMarginFraction * layout_spacing_m(fiducials_robot_m)};
+}
 
 std::string configuration_clash(const CorrectorData& data, double tolerance_m) {
   if (!data.has_joints()) return {};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to correction: a fitted correction field sampled on a regular lattice over its
 // support box and read back by tricubic (Catmull-Rom) interpolation of the correction and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The finest lattice with its empty nodes filled (docs/field-models.md): one affine fit per empty
 // node from the fiducials of its 3 x 3 x 3 block, then the complete grid's trilinear weights.
 #include "vrreg/correction/filled_lattice.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Grid detection: per-axis coordinate levels on an evenly spaced lattice, then the base lattice
 // or the finest complete every-s-th sub-lattice (the paper's A1/A2 layouts: a full grid minus
 // the targets, whose fiducials hold a complete grid of twice the spacing).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal: grid_stencil for many points (correct_targets): the per-axis slack computed once and
 // the stencil written in place. Same operations as grid_stencil, so the same bits.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Hyperparameters of one axis of a universal-kriging model by maximum restricted likelihood
 // (REML) from deterministic starts (docs/field-models.md, "Hyperparameters").

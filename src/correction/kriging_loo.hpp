@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal: leave-one-out residuals of an exact universal-kriging model in closed form, and the
 // latent-sd scale that makes them calibrated (docs/field-models.md, "Predicted sd").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // One axis of a universal-kriging model conditioned on its data: posterior mean and latent sd
 // at query points, the trend coefficients' uncertainty included (docs/field-models.md).

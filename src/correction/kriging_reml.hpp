@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Restricted (REML) marginal log-likelihood of a universal-kriging model and its analytic
 // gradient in log-parameters (docs/field-models.md, "Hyperparameters").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The evenly spaced lattice of a fiducial layout: per-axis coordinate levels (cluster means),
 // a least-squares lattice through them, and each fiducial's node.
 #include "lattice.hpp"

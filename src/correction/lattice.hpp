@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to correction: the evenly spaced lattice a fiducial layout sits on (per-axis levels,
 // each fiducial's node), shared by the complete-grid detection and the filled lattice.

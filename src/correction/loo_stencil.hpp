@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Leave-one-out prediction of a fiducial's correction from its neighbours: the weights of a
 // least-squares affine fit over the neighbours, evaluated at the fiducial (docs/outliers.md).

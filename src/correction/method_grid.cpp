@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Trilinear RRBC weights in a complete regular grid of fiducials (Eq. 7) as a correction method.
 // The grid found in the fiducials is saved: finding it again can take long on a large layout.
 #include <array>

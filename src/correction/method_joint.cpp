@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The joint-space error model (kinematics/joint_error_model.hpp) as a correction method. It
 // models e = y_observed - y_nominal in the robot frame as a function of the commanded joints; a
 // corrected target is R X + tau - e(q), i.e. the sensor-frame correction -R' e / s.
@@ -24,14 +25,26 @@ std::vector<kinematics::JointVector> joint_columns(const Eigen::Ref<const Eigen:
   return out;
 }
 
+// A commanded joint may leave the fiducials' range of that joint by this share of the range (plus
+// a milliradian) before the model is outside its support: its angle-error functions are held at
+// the range's ends, which is a guess a little way out and none far away.
+constexpr double kJointRangeMargin = 0.05;
+constexpr double kJointSlackRad = 1e-3;
+
 class JointMethod;
 std::unique_ptr<const JointMethod> fit_joint_model(
     const CorrectorData& data, const kinematics::JointErrorModelOptions& options);
 
 class JointMethod final : public FittedMethod {
  public:
-  JointMethod(kinematics::JointErrorModel model, const SimilarityTransform& T)
-      : model_(std::move(model)), T_robot_sensor_(T) {}
+  JointMethod(kinematics::JointErrorModel model, const SimilarityTransform& T, SupportBox support)
+      : model_(std::move(model)), T_robot_sensor_(T), support_(support) {
+    const kinematics::JointErrorModelParameters p = model_.saved();
+    const Eigen::VectorXd margin =
+        (kJointRangeMargin * (p.q_hi_rad - p.q_lo_rad)).array() + kJointSlackRad;
+    q_lo_rad_ = p.q_lo_rad - margin;
+    q_hi_rad_ = p.q_hi_rad + margin;
+  }
 
   [[nodiscard]] InterpolationMethod method() const override { return InterpolationMethod::kJoint; }
   [[nodiscard]] MethodNeeds needs() const override { return {.joints = true}; }
@@ -58,7 +71,17 @@ class JointMethod final : public FittedMethod {
     const Points3 e_robot_m = model_.predict_m(joint_columns(query.joints_rad, begin, end));
     out.corrections_sensor_m.middleCols(begin, end - begin) =
         -(T_robot_sensor_.rotation.transpose() * e_robot_m) / T_robot_sensor_.scale;
-    for (Eigen::Index i = begin; i < end; ++i) out.stencils[static_cast<std::size_t>(i)] = Stencil{};
+    for (Eigen::Index i = begin; i < end; ++i) {
+      const bool inside = support_.contains(query.registered_robot_m.col(i)) &&
+                          (query.joints_rad.col(i).array() >= q_lo_rad_.array()).all() &&
+                          (query.joints_rad.col(i).array() <= q_hi_rad_.array()).all();
+      if (inside) {
+        out.stencils[static_cast<std::size_t>(i)] = Stencil{};
+      } else {
+        out.stencils[static_cast<std::size_t>(i)] = flagged_stencil(StencilStatus::kOutsideSupport);
+        out.corrections_sensor_m.col(i).setZero();
+      }
+    }
   }
 
   [[nodiscard]] std::string describe() const override {
@@ -108,6 +131,9 @@ class JointMethod final : public FittedMethod {
  private:
   kinematics::JointErrorModel model_;
   SimilarityTransform T_robot_sensor_;
+  SupportBox support_;
+  Eigen::VectorXd q_lo_rad_;  ///< the joints' fitted ranges with their margins
+  Eigen::VectorXd q_hi_rad_;
 };
 
 // Least squares needs redundancy: with fewer equations per identified parameter the fit follows
@@ -157,7 +183,7 @@ std::unique_ptr<const JointMethod> fit_joint_model(
       kinematics::JointErrorModel::fit(*data.robot,
                                        joint_columns(data.joints_rad, 0, data.size()),
                                        error_robot_m, options, p_flange_marker_m),
-      data.T_robot_sensor);
+      data.T_robot_sensor, field_support(data.fiducials_robot_m));
 }
 
 std::string joint_unavailable(const CorrectorData& data, const MethodSettings&) {
@@ -171,8 +197,9 @@ std::string joint_unavailable(const CorrectorData& data, const MethodSettings&) 
   return {};
 }
 
-FitOutcome fit_joint(const CorrectorData& data, const MethodSettings&) {
-  std::unique_ptr<const JointMethod> fitted = fit_joint_model(data, {});
+FitOutcome fit_joint(const CorrectorData& data, const MethodSettings& /*settings*/) {
+  std::unique_ptr<const JointMethod> fitted =
+      fit_joint_model(data, {});
   const int rank = fitted->model().rank();
   const Eigen::Index equations = 3 * data.size();
   if (equations < kMinEquationsPerParameter * rank) {
@@ -188,7 +215,7 @@ FitOutcome fit_joint(const CorrectorData& data, const MethodSettings&) {
 
 std::unique_ptr<const FittedMethod> restore_joint(const MethodState& state,
                                                   const CorrectorData& data,
-                                                  const MethodSettings&) {
+                                                  const MethodSettings& /*settings*/) {
   VRREG_THROW_UNLESS(data.robot, "the saved joint corrector needs the model's robot");
   kinematics::JointErrorModelParameters p;
   const int n = data.robot->n_joints();
@@ -219,8 +246,9 @@ std::unique_ptr<const FittedMethod> restore_joint(const MethodState& state,
   p.selection_cv_rms_m = state.has("selection_cv_rms_m")
                              ? state.number("selection_cv_rms_m")
                              : std::numeric_limits<double>::quiet_NaN();
-  return std::make_unique<const JointMethod>(kinematics::JointErrorModel::restore(*data.robot, p),
-                                             data.T_robot_sensor);
+  return std::make_unique<const JointMethod>(
+      kinematics::JointErrorModel::restore(*data.robot, p), data.T_robot_sensor,
+      field_support(data.fiducials_robot_m));
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The kriging field model (kriging.hpp) as a correction method: fitted on the fiducials' nominal
 // robot positions, asked at registered positions; a corrected target's sd is the posterior sd of
 // the field plus its own noise (the nugget), in quadrature.
@@ -28,15 +29,17 @@ struct KrigingFrame {
   [[nodiscard]] Points3 inputs(const ConstPoints3Ref& robot_m) const {
     return cylinder ? cylinder->coordinates(robot_m) : Points3(robot_m);
   }
+  // Components in the robot frame (or along the cylinder's axes), never the sensor's: a field
+  // model per component must not depend on where the tracker stands.
   [[nodiscard]] Points3 values(const ConstPoints3Ref& robot_m,
                                const ConstPoints3Ref& corrections_sensor_m) const {
-    if (!cylinder) return corrections_sensor_m;
-    return cylinder->to_local(robot_m, R_robot_sensor * corrections_sensor_m);
+    const Points3 robot_frame = R_robot_sensor * corrections_sensor_m;
+    return cylinder ? cylinder->to_local(robot_m, robot_frame) : robot_frame;
   }
   [[nodiscard]] Points3 corrections_sensor(const ConstPoints3Ref& robot_m,
                                            const ConstPoints3Ref& values_m) const {
-    if (!cylinder) return values_m;
-    return R_robot_sensor.transpose() * cylinder->from_local(robot_m, values_m);
+    return R_robot_sensor.transpose() *
+           (cylinder ? cylinder->from_local(robot_m, values_m) : Points3(values_m));
   }
 };
 
@@ -59,8 +62,12 @@ KrigingModel fit_in_frame(const KrigingFrame& frame, const CorrectorData& data,
 
 class KrigingMethod final : public FittedMethod {
  public:
-  KrigingMethod(KrigingModel model, KrigingOptions options, KrigingFrame frame)
-      : model_(std::move(model)), options_(std::move(options)), frame_(std::move(frame)) {}
+  KrigingMethod(KrigingModel model, KrigingOptions options, KrigingFrame frame,
+                SupportBox support)
+      : model_(std::move(model)),
+        options_(std::move(options)),
+        frame_(std::move(frame)),
+        support_(support) {}
 
   [[nodiscard]] InterpolationMethod method() const override {
     return InterpolationMethod::kKriging;
@@ -83,7 +90,8 @@ class KrigingMethod final : public FittedMethod {
       h[a] = model_.axes()[a].hyperparameters;
       (*options.latent_sd_scale)[a] = model_.axes()[a].latent_sd_scale;
     }
-    return fitted<KrigingMethod>(fit_in_frame(frame_, subset, options, &h), options, frame_);
+    return fitted<KrigingMethod>(fit_in_frame(frame_, subset, options, &h), options, frame_,
+                                 field_support(subset.fiducials_robot_m));
   }
 
   void predict(const MethodQuery& query, Eigen::Index begin, Eigen::Index end,
@@ -95,8 +103,13 @@ class KrigingMethod final : public FittedMethod {
     // The 3D sd is the root of the summed per-component variances, the same in any frame.
     const Eigen::Vector3d nugget_var = model_.nugget_sd_m().cwiseAbs2();
     for (Eigen::Index i = begin; i < end; ++i) {
-      out.stencils[static_cast<std::size_t>(i)] = Stencil{};
       out.sd_m(i) = std::sqrt((p.sd_m.col(i - begin).cwiseAbs2() + nugget_var).sum());
+      if (query.beyond_support || support_.contains(query.registered_robot_m.col(i))) {
+        out.stencils[static_cast<std::size_t>(i)] = Stencil{};
+      } else {
+        out.stencils[static_cast<std::size_t>(i)] = flagged_stencil(StencilStatus::kOutsideSupport);
+        out.corrections_sensor_m.col(i).setZero();
+      }
     }
   }
 
@@ -110,6 +123,7 @@ class KrigingMethod final : public FittedMethod {
   KrigingModel model_;
   KrigingOptions options_;
   KrigingFrame frame_;
+  SupportBox support_;
 };
 
 KrigingOptions options_for(const CorrectorData& data) {
@@ -133,22 +147,24 @@ std::string kriging_unavailable(const CorrectorData& data, const MethodSettings&
   return why;
 }
 
-FitOutcome fit_kriging(const CorrectorData& data, const MethodSettings&) {
+FitOutcome fit_kriging(const CorrectorData& data, const MethodSettings& /*settings*/) {
   const KrigingOptions options = options_for(data);
   KrigingFrame frame = frame_of(data);
   KrigingModel model = fit_in_frame(frame, data, options, nullptr);
-  return fitted<KrigingMethod>(std::move(model), options, std::move(frame));
+  return fitted<KrigingMethod>(std::move(model), options, std::move(frame),
+                               field_support(data.fiducials_robot_m));
 }
 
 std::unique_ptr<const FittedMethod> restore_kriging(const MethodState& state,
                                                     const CorrectorData& data,
-                                                    const MethodSettings&) {
+                                                    const MethodSettings& /*settings*/) {
   KrigingFrame frame = frame_of(data);
   KrigingModel model =
       KrigingModel::restore(frame.inputs(data.fiducials_robot_m),
                             frame.values(data.fiducials_robot_m, data.corrections_sensor_m), state);
-  return std::make_unique<const KrigingMethod>(std::move(model), options_for(data),
-                                               std::move(frame));
+  return std::make_unique<const KrigingMethod>(
+      std::move(model), options_for(data), std::move(frame),
+      field_support(data.fiducials_robot_m));
 }
 
 }  // namespace

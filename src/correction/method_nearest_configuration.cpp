@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Strategy 3 of Procedure 2 (paper section 4.4), correction half, as a correction method: the
 // octuplet of Eq. 7 (weights 1/8) whose every corner is the fiducial, among those measured at
 // that corner in each arm configuration, whose joints are nearest the target's.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The paper's octuplet (dataset B, Eq. 7 with weights 1/8): the fiducials at the 8 corners of the
 // cube of edge a around the target's nominal robot position, as a correction method. With
 // Procedure 2's Strategy 3 each corner is taken in the arm configuration nearest the target's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The radial basis function field model (rbf.hpp) as a correction method: fitted on the
 // fiducials' nominal robot positions, asked at registered positions. Its sd is the corrector's
 // cross-validation, like the other models without a posterior.
@@ -9,7 +10,10 @@ namespace {
 
 class RbfMethod final : public FittedMethod {
  public:
-  explicit RbfMethod(RbfModel model) : model_(std::move(model)) {}
+  // The model is of the corrections' robot-frame components (R epsilon): per-component
+  // smoothing must not depend on where the tracker stands.
+  RbfMethod(RbfModel model, SupportBox support, const Eigen::Matrix3d& R_robot_sensor)
+      : model_(std::move(model)), support_(support), R_robot_sensor_(R_robot_sensor) {}
 
   [[nodiscard]] InterpolationMethod method() const override { return InterpolationMethod::kRbf; }
   [[nodiscard]] std::string describe() const override { return model_.describe(); }
@@ -17,8 +21,16 @@ class RbfMethod final : public FittedMethod {
   void predict(const MethodQuery& query, Eigen::Index begin, Eigen::Index end,
                MethodPredictions& out) const override {
     out.corrections_sensor_m.middleCols(begin, end - begin) =
+        R_robot_sensor_.transpose() *
         model_.predict(query.registered_robot_m.middleCols(begin, end - begin)).mean_m;
-    for (Eigen::Index i = begin; i < end; ++i) out.stencils[static_cast<std::size_t>(i)] = Stencil{};
+    for (Eigen::Index i = begin; i < end; ++i) {
+      if (query.beyond_support || support_.contains(query.registered_robot_m.col(i))) {
+        out.stencils[static_cast<std::size_t>(i)] = Stencil{};
+      } else {
+        out.stencils[static_cast<std::size_t>(i)] = flagged_stencil(StencilStatus::kOutsideSupport);
+        out.corrections_sensor_m.col(i).setZero();
+      }
+    }
   }
 
   [[nodiscard]] MethodState save() const override {
@@ -29,6 +41,8 @@ class RbfMethod final : public FittedMethod {
 
  private:
   RbfModel model_;
+  SupportBox support_;
+  Eigen::Matrix3d R_robot_sensor_;
 };
 
 std::string rbf_unavailable(const CorrectorData& data, const MethodSettings&) {
@@ -37,14 +51,18 @@ std::string rbf_unavailable(const CorrectorData& data, const MethodSettings&) {
   return why.empty() ? coincidence_unavailable(data, "rbf") : why;
 }
 
-FitOutcome fit_rbf(const CorrectorData& data, const MethodSettings&) {
-  return fitted<RbfMethod>(RbfModel::fit(data.fiducials_robot_m, data.corrections_sensor_m));
+FitOutcome fit_rbf(const CorrectorData& data, const MethodSettings& /*settings*/) {
+  const Eigen::Matrix3d& R = data.T_robot_sensor.rotation;
+  return fitted<RbfMethod>(RbfModel::fit(data.fiducials_robot_m, R * data.corrections_sensor_m),
+                           field_support(data.fiducials_robot_m), R);
 }
 
 std::unique_ptr<const FittedMethod> restore_rbf(const MethodState& state, const CorrectorData& data,
-                                                const MethodSettings&) {
+                                                const MethodSettings& /*settings*/) {
+  const Eigen::Matrix3d& R = data.T_robot_sensor.rotation;
   return std::make_unique<const RbfMethod>(
-      RbfModel::restore(data.fiducials_robot_m, data.corrections_sensor_m, state));
+      RbfModel::restore(data.fiducials_robot_m, R * data.corrections_sensor_m, state),
+      field_support(data.fiducials_robot_m), R);
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The table of correction methods: adding one is a file method_<name>.cpp and a line here.
 #include <array>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Barycentric RRBC weights in the Delaunay tetrahedron holding the registered target (Eq. 7) as a
 // correction method. The tetrahedralization is not saved but rebuilt on restore: qhull is
 // deterministic (the same stencils), fast at cell sizes, and the tetrahedra would outweigh the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to correction: what the correction methods share (method_*.cpp).
 #include <memory>
@@ -49,6 +50,33 @@ CorrectionMethod trilinear_method();
 CorrectionMethod kriging_method();
 CorrectionMethod rbf_method();
 CorrectionMethod joint_method();
+
+/// The edge of the fiducials' box's volume per fiducial [m] (over the axes the box spans; 0 when
+/// it spans none).
+double volume_spacing_m(const ConstPoints3Ref& points_m);
+
+/// The typical distance between neighbouring fiducials [m]: the larger of the median
+/// nearest-neighbour distance and the edge of the layout's volume per fiducial.
+double layout_spacing_m(const ConstPoints3Ref& points_m);
+
+/// Where a model of the whole field answers: the box of the fiducials' nominal positions (the
+/// field is known there; beyond it a model would extrapolate), `margin_m` beyond its faces.
+struct SupportBox {
+  Eigen::Vector3d lo_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d hi_m = Eigen::Vector3d::Zero();
+  double margin_m = 0.0;
+  [[nodiscard]] bool contains(const Eigen::Vector3d& p_m) const {
+    return (p_m.array() >= lo_m.array() - margin_m).all() &&
+           (p_m.array() <= hi_m.array() + margin_m).all();
+  }
+};
+
+/// The support of a field model fitted on `fiducials_robot_m`: their box and a margin of a
+/// quarter of the layout spacing. A fiducial on the layout's face registers off its nominal
+/// position by the robot's error (up to ~1 mm) and must still be corrected, while a quarter
+/// spacing is where a smooth model's extrapolation is still bounded by its neighbours (on the
+/// test cells the error there is within the sd; half a spacing out it doubles).
+SupportBox field_support(const ConstPoints3Ref& fiducials_robot_m);
 
 /// Fewest fiducials a model of the whole field is fitted on.
 inline constexpr Eigen::Index kMinFieldModelFiducials = 12;

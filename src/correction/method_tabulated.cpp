@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "method_tabulated.hpp"
 
 #include <tbb/parallel_for.h>
@@ -26,36 +27,12 @@ constexpr double kSpacingFraction = 0.4;
 // per axis) the 10 mm table of kriging is within 1.4 um.
 constexpr double kDeviationPerNoise = 0.05;
 constexpr double kDefaultDeviationM = 1e-6;
+// How far beyond the target a table may deviate and still be used (5 x 1/20 of the noise).
+constexpr double kAcceptFactor = 5.0;
 constexpr Eigen::Index kMaxNodes = Eigen::Index{1} << 21;
 constexpr Eigen::Index kCheckPoints = 2000;
 constexpr Eigen::Index kBlock = 256;
 constexpr const char* kForm = "form";
-
-double layout_spacing_m(const ConstPoints3Ref& points_m) {
-  const Eigen::Index n = points_m.cols();
-  const Eigen::Vector3d extent = points_m.rowwise().maxCoeff() - points_m.rowwise().minCoeff();
-  double volume = 1.0;
-  int dims = 0;
-  for (int a = 0; a < 3; ++a) {
-    if (extent(a) > 1e-9 * extent.maxCoeff()) {
-      volume *= extent(a);
-      ++dims;
-    }
-  }
-  double spacing = dims == 0 ? 0.0 : std::pow(volume / static_cast<double>(n), 1.0 / dims);
-  const PointIndex index(points_m);
-  std::vector<double> nearest;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const std::vector<Eigen::Index> two = index.nearest_k(points_m.col(j), 2);
-    if (two.size() == 2) nearest.push_back((points_m.col(two[1]) - points_m.col(j)).norm());
-  }
-  if (!nearest.empty()) {
-    std::nth_element(nearest.begin(), nearest.begin() + static_cast<std::ptrdiff_t>(nearest.size() / 2),
-                     nearest.end());
-    spacing = std::max(spacing, nearest[nearest.size() / 2]);
-  }
-  return spacing > 0.0 ? spacing : 1e-3;
-}
 
 void fill(FieldTable& t, const ExactField& exact) {
   const Eigen::Index n = t.size();
@@ -108,12 +85,11 @@ void check(FieldTable& t, const ExactField& exact) {
 class TabulatedMethod final : public FittedMethod {
  public:
   TabulatedMethod(FieldTable table, InterpolationMethod method, MethodState exact_state,
-                  std::string exact_description, double tolerance_m)
+                  std::string exact_description)
       : table_(std::move(table)),
         method_(method),
         exact_state_(std::move(exact_state)),
-        exact_description_(std::move(exact_description)),
-        tolerance_m_(tolerance_m) {}
+        exact_description_(std::move(exact_description)) {}
 
   [[nodiscard]] InterpolationMethod method() const override { return method_; }
   [[nodiscard]] bool has_own_sd() const override { return table_.has_sd; }
@@ -134,11 +110,11 @@ class TabulatedMethod final : public FittedMethod {
       Eigen::Vector3d c;
       double sd = 0.0;
       Stencil& s = out.stencils[static_cast<std::size_t>(i)];
-      if (table_.lookup(query.registered_robot_m.col(i), tolerance_m_, c, sd)) {
+      if (table_.lookup(query.registered_robot_m.col(i), 0.0, c, sd)) {
         s = Stencil{};
         out.corrections_sensor_m.col(i) = c;
       } else {
-        s = flagged_stencil(StencilStatus::kOutsideGrid);
+        s = flagged_stencil(StencilStatus::kOutsideSupport);
         out.corrections_sensor_m.col(i).setZero();
       }
       if (table_.has_sd) out.sd_m(i) = sd;
@@ -164,18 +140,20 @@ class TabulatedMethod final : public FittedMethod {
   InterpolationMethod method_;
   MethodState exact_state_;
   std::string exact_description_;
-  double tolerance_m_;
 };
 
 }  // namespace
 
-FieldTable build_field_table(const ExactField& exact, const ConstPoints3Ref& fiducials_robot_m,
+std::optional<FieldTable> build_field_table(const ExactField& exact, const ConstPoints3Ref& fiducials_robot_m,
                              std::optional<double> noise_sd_m) {
   const double target_m =
       noise_sd_m && *noise_sd_m > 0.0 ? kDeviationPerNoise * std::sqrt(3.0) * *noise_sd_m
                                       : kDefaultDeviationM;
-  const Eigen::Vector3d lo = fiducials_robot_m.rowwise().minCoeff();
-  const Eigen::Vector3d hi = fiducials_robot_m.rowwise().maxCoeff();
+  // The table covers the model's support, margin included, so that it answers where the exact
+  // model does.
+  const SupportBox support = field_support(fiducials_robot_m);
+  const Eigen::Vector3d lo = support.lo_m.array() - support.margin_m;
+  const Eigen::Vector3d hi = support.hi_m.array() + support.margin_m;
   double spacing_m = kSpacingFraction * layout_spacing_m(fiducials_robot_m);
   FieldTable t = FieldTable::over(lo, hi, spacing_m);
   while (t.size() > kMaxNodes) {
@@ -188,17 +166,20 @@ FieldTable build_field_table(const ExactField& exact, const ConstPoints3Ref& fid
   if (t.max_correction_deviation_m > target_m && finer.size() <= kMaxNodes) {
     fill(finer, exact);
     check(finer, exact);
-    return finer;
+    t = std::move(finer);
   }
+  // A model rougher than its table even after refining (length scales below the fiducials'
+  // spacing) keeps its exact form: a table that moved a correction by more than a quarter of
+  // the noise would change the answer, not only its speed.
+  if (t.max_correction_deviation_m > kAcceptFactor * target_m) return std::nullopt;
   return t;
 }
 
 std::unique_ptr<const FittedMethod> tabulated_method(FieldTable table, InterpolationMethod method,
                                                      MethodState exact_state,
-                                                     std::string exact_description,
-                                                     double tolerance_m) {
+                                                     std::string exact_description) {
   return std::make_unique<const TabulatedMethod>(std::move(table), method, std::move(exact_state),
-                                                 std::move(exact_description), tolerance_m);
+                                                 std::move(exact_description));
 }
 
 bool is_tabulated(const MethodState& state) {
@@ -220,10 +201,9 @@ MethodState exact_state_of(const MethodState& state) {
 }
 
 std::unique_ptr<const FittedMethod> restore_tabulated(const MethodState& state,
-                                                      InterpolationMethod method,
-                                                      double tolerance_m) {
+                                                      InterpolationMethod method) {
   return tabulated_method(FieldTable::restore(state), method, exact_state_of(state),
-                          state.text("exact_description"), tolerance_m);
+                          state.text("exact_description"));
 }
 
 }  // namespace vrreg::detail

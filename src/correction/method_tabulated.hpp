@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to correction: a field model read from its table (field_table.hpp) as a correction
 // method, and how the table is built from the exact model.
@@ -15,18 +16,18 @@ namespace vrreg::detail {
 using ExactField = std::function<void(const Points3& points_m, Points3& corrections_sensor_m,
                                       Eigen::VectorXd& sd_m)>;
 
-/// Samples `exact` on a lattice over the fiducials' box (spacing from their layout, refined
+/// Samples `exact` on a lattice over the fiducials' support (field_support; spacing from their layout, refined
 /// once when the measured deviation exceeds 1/20 of the fiducials' noise `noise_sd_m`, per axis
-/// [m], or 1 um without it) and checks it at seeded points.
-FieldTable build_field_table(const ExactField& exact, const ConstPoints3Ref& fiducials_robot_m,
+/// [m], or 1 um without it) and checks it at seeded points; nullopt when even the refined table
+/// deviates by more than 5 times that target (the exact model is kept).
+std::optional<FieldTable> build_field_table(const ExactField& exact, const ConstPoints3Ref& fiducials_robot_m,
                              std::optional<double> noise_sd_m);
 
 /// The tabulated form of a fitted method: `exact_state` is the exact method's saved state (kept
 /// so that the exact model can be restored), `exact_description` its description.
 std::unique_ptr<const FittedMethod> tabulated_method(FieldTable table, InterpolationMethod method,
                                                      MethodState exact_state,
-                                                     std::string exact_description,
-                                                     double tolerance_m);
+                                                     std::string exact_description);
 
 /// True when `state` is a tabulated method's.
 bool is_tabulated(const MethodState& state);
@@ -36,7 +37,6 @@ MethodState exact_state_of(const MethodState& state);
 
 /// The tabulated method saved in `state`.
 std::unique_ptr<const FittedMethod> restore_tabulated(const MethodState& state,
-                                                      InterpolationMethod method,
-                                                      double tolerance_m);
+                                                      InterpolationMethod method);
 
 }  // namespace vrreg::detail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Trilinear interpolation on the fiducials' finest lattice, its empty nodes filled from their
 // neighbours (filled_lattice.hpp), as a correction method of the whole field. Its sd is the
 // corrector's cross-validation. Not saved: filling the lattice again is deterministic and quick.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A kd-tree (nanoflann) over a fixed set of points: nearest neighbour and radius queries [m].
 #include <memory>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Cubic RBF with a polynomial term on one set of fiducials: smoothing per axis by closed-form
 // leave-one-out over a grid of smoothing values, then the weights (docs/field-models.md, "RBF").

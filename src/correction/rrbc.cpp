@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/correction/rrbc.hpp"
 
 #include <cmath>
@@ -39,6 +40,8 @@ const char* to_string(StencilStatus status) {
       return "outside hull";
     case StencilStatus::kMissingCorner:
       return "missing corner";
+    case StencilStatus::kOutsideSupport:
+      return "outside support";
   }
   return "unknown";
 }

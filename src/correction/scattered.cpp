@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Point location in a Delaunay tetrahedralization by a visibility walk (move across the face
 // whose barycentric coordinate is most negative), started at a tetrahedron incident to the
 // nearest fiducial. Flat tetrahedra (cospherical input, e.g. grids) are stepped over; if the walk

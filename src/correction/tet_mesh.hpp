@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Geometry of a Delaunay tetrahedralization for point location: barycentric maps, flat
 // tetrahedra, outward hull planes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to io: doubles as base64 of their little-endian IEEE 754 bytes, for the large arrays
 // of a model file (a corrector's table): a quarter of the decimal text, read back to the bit and

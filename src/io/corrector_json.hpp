@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to io: the "corrector" member of a model file (version 2): the fitted correction
 // method's saved state, its settings, its cross-validation table and where its sd comes from.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to io: the length unit of a model file's keys. Version 2 writes metres, so that every
 // number reads back to the bit (version 1's millimetres came back one unit in the last place off

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Joint-by-joint chains (URDF's form) to DH: with every joint at zero, the axis of joint i is a
 // line (point, direction) in the base frame; DH frame i-1 has z on the axis of joint i, frame i's x
 // along the common normal from axis i to axis i+1. What the DH table cannot hold (where frame 0

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Saving and restoring a fitted joint-space error model (joint_error_model.hpp): its state is
 // small (the parameters, the joints' ranges, the trend's frame), so a model file carries it and a
 // corrector needs no fit.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Numerical IK (numeric_ik.hpp): Levenberg-Marquardt steps dq = J^T (J J^T + lambda I)^-1 e on the
 // pose error e = [p* - p; log(R* R^T)] (base frame), lambda cut tenfold after a step that lowers
 // |e| and raised tenfold after one that does not, joints clamped into their limits after every

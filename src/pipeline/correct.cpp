@@ -1,10 +1,10 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/pipeline/correct.hpp"
 
 #include "model_corrector.hpp"
 #include "procedure2_steps.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
-#include "vrreg/pipeline/marker_offset.hpp"
 
 namespace vrreg {
 namespace {
@@ -14,20 +14,13 @@ using planning::Strategy;
 CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& file_set,
                           const CorrectOptions& options) {
   model.validate();
-  // Hand-eye model: points with joints get their robot positions from the estimated offset.
-  MeasurementSet moved;
-  if (model.marker_offset) moved = with_marker_offset(model, file_set, Role::kTarget, false);
-  const MeasurementSet& input = model.marker_offset ? moved : file_set;
   const Strategy strategy = model.procedure2.strategy;  // Procedure 2 (section 4.4): as registered
   const kinematics::JointNorm norm = model.procedure2.joint_norm;
-  const MeasurementSet* set = &input;
-  MeasurementSet relabelled;
-  if (strategy == Strategy::kAlongPath) {
-    relabelled = pipeline_detail::relabel(input, norm).set;
-    set = &relabelled;
-  }
-  const std::optional<int> config = options.config ? options.config : model.config;
-  const std::vector<std::size_t> rows = pipeline_detail::select_rows(*set, Role::kTarget, config);
+  pipeline_detail::PointsToCorrect points;
+  pipeline_detail::prepare_points(model, file_set, strategy, norm,
+                                  options.config ? options.config : model.config, false, points);
+  const MeasurementSet* set = points.set;
+  const std::vector<std::size_t>& rows = points.rows;
   CorrectResult out;
   out.interpolation = options.interpolation.apply(model.interpolation);
   Points3 nominal(3, 0);

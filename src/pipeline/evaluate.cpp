@@ -1,10 +1,10 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "vrreg/pipeline/evaluate.hpp"
 
 #include "procedure2_steps.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/metrics/errors.hpp"
-#include "vrreg/pipeline/marker_offset.hpp"
 
 namespace vrreg {
 namespace {
@@ -36,27 +36,18 @@ Strategy strategy_to_use(const RegistrationModel& model, const EvaluateOptions& 
 EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet& file_set,
                             const EvaluateOptions& options) {
   model.validate();
-  // Hand-eye model: the targets' robot positions come from their joints and the estimated offset.
-  MeasurementSet moved;
-  if (model.marker_offset) moved = with_marker_offset(model, file_set, Role::kTarget, true);
-  const MeasurementSet& input = model.marker_offset ? moved : file_set;
   EvaluateResult out;
   out.strategy = strategy_to_use(model, options);
   const kinematics::JointNorm norm = options.joint_norm.value_or(model.procedure2.joint_norm);
-  const MeasurementSet* set = &input;
-  MeasurementSet relabelled;
-  if (out.strategy == Strategy::kAlongPath) {  // the targets take the labels of their own path
-    planning::Strategy2Result r = pipeline_detail::relabel(input, norm);
-    relabelled = std::move(r.set);
-    out.relabelled = r.summary;
-    set = &relabelled;
-  }
   // A model built for one configuration is evaluated on that configuration unless told otherwise.
   out.config = options.config ? options.config : model.config;
   VRREG_THROW_UNLESS(out.strategy != Strategy::kAsListed || out.config,
                      "--strategy 1 evaluates one configuration: give --config N");
-  const std::vector<std::size_t> rows =
-      pipeline_detail::select_rows(*set, Role::kTarget, out.config);
+  pipeline_detail::PointsToCorrect points;
+  pipeline_detail::prepare_points(model, file_set, out.strategy, norm, out.config, true, points);
+  const MeasurementSet* set = points.set;
+  const std::vector<std::size_t>& rows = points.rows;
+  out.relabelled = points.relabelled;
   out.targets_robot_m = set->robot_points(rows);
   out.interpolation = options.interpolation.apply(model.interpolation);
   const pipeline_detail::CorrectorRequest request{out.interpolation, out.strategy, norm,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to pipeline: a registration model's fiducials as correction data, and the corrector
 // evaluate and correct use: the model's own when it answers what is asked, else one fitted now.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "procedure2_steps.hpp"
 
 #include <string>
@@ -5,6 +6,7 @@
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
+#include "vrreg/pipeline/marker_offset.hpp"
 #include "vrreg/planning/strategy3_registration.hpp"
 
 namespace vrreg::pipeline_detail {
@@ -28,6 +30,24 @@ planning::Strategy2Result relabel(const MeasurementSet& set, kinematics::JointNo
   } catch (const InputError& e) {
     fail(set, e.what());
   }
+}
+
+void prepare_points(const RegistrationModel& model, const MeasurementSet& file_set,
+                    planning::Strategy strategy, kinematics::JointNorm norm,
+                    std::optional<int> config, bool robot_positions_required,
+                    PointsToCorrect& out) {
+  out.set = &file_set;
+  if (model.marker_offset) {
+    out.moved = with_marker_offset(model, file_set, Role::kTarget, robot_positions_required);
+    out.set = &out.moved;
+  }
+  if (strategy == planning::Strategy::kAlongPath) {  // the points take the labels of their path
+    planning::Strategy2Result r = relabel(*out.set, norm);
+    out.relabelled_set = std::move(r.set);
+    out.relabelled = r.summary;
+    out.set = &out.relabelled_set;
+  }
+  out.rows = select_rows(*out.set, Role::kTarget, config);
 }
 
 RegistrationModel volume_corner_model(const MeasurementSet& set, const planning::Procedure2& p2,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to pipeline: the steps of Procedure 2 (paper section 4.4) on a measurement set, with
 // errors that name its source: relabelling (Strategy 2) and Strategy 3's registration and
@@ -29,6 +30,29 @@ RegistrationModel volume_corner_model(const MeasurementSet& set, const planning:
                                       const InterpolationSettings& interpolation,
                                       RegistrationResult& registration_result,
                                       Points3& registered_sensor_m, Points3& registered_robot_m);
+
+/// The points of a measurement set that evaluate and correct hand to the corrector, prepared the
+/// same way for both: robot positions from the model's marker offset (hand-eye models), the
+/// Strategy 2 labels of their own path, and the rows of the configuration asked for.
+struct PointsToCorrect {
+  const MeasurementSet* set = nullptr;  ///< the file's set, or one of the two below
+  std::vector<std::size_t> rows;
+  std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2's relabelling
+  MeasurementSet moved;                                  ///< robot positions from the offset
+  MeasurementSet relabelled_set;
+
+  PointsToCorrect() = default;
+  PointsToCorrect(const PointsToCorrect&) = delete;  // `set` may point into this object
+  PointsToCorrect& operator=(const PointsToCorrect&) = delete;
+};
+
+/// Fills `out` from `file_set` for `strategy` and `norm`, keeping the rows of `config` (all when
+/// nullopt). `robot_positions_required`: every row must have a robot position after the marker
+/// offset (evaluate compares against it; correct only uses it where a method needs it).
+void prepare_points(const RegistrationModel& model, const MeasurementSet& file_set,
+                    planning::Strategy strategy, kinematics::JointNorm norm,
+                    std::optional<int> config, bool robot_positions_required,
+                    PointsToCorrect& out);
 
 /// The `rows` of `set` corrected (Eq. 7, 8) by the model's corrector for `request`, or one fitted
 /// now (model_corrector.hpp): Strategy 3's nearest-configuration octuplets, the paper's stencils

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to pipeline: the robust branch of register_fiducials (RegisterOptions::robust).
 #include <cstddef>

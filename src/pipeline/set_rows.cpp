@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "set_rows.hpp"
 
 #include "vrreg/core/check.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to pipeline: selecting rows of a measurement set, with errors that name its source.
 #include <cstddef>

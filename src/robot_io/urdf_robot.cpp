@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // URDF -> joint list -> DH chain. urdfdom parses the XML and links the tree (it refuses a link
 // with two parents, a missing link, a joint without limits where URDF requires them); it reports
 // why through console_bridge, which is captured here so that the error is one line naming the file.

@@ -56,7 +56,8 @@ void check_golden_commands(const std::string& commands_file, const std::string& 
   fs::copy_file(fs::path(VRREG_SOURCE_DIR) / "examples/data/example-cell.csv", dir / "cell.csv");
   write_text(dir / "arms.csv", two_arm_cell_csv());
   // A model file of version 1 (millimetres), as register wrote it before version 2: still read,
-  // and corrected with the same numbers as then.
+  // and corrected with the same numbers as then, except rbf and auto's rbf row, which now model
+  // the corrections' robot-frame components (the same wherever the tracker stands).
   fs::copy_file(golden / "v1-model.json", dir / "model-v1.json");
   // The report inlines the charting library; a small stand-in keeps this test independent of it.
   write_text(dir / "plotly.js", "/* Plotly stand-in for the golden test */" + std::string(1000, ' '));

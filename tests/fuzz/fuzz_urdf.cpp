@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz harness: the URDF robot reader (src/robot_io/urdf_robot.cpp, urdfdom underneath), with the
 // default chain and with a named base and tip link.
 #include "fuzz_support.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Joint-by-joint chains as DH chains: FK, the Jacobian (against central differences) and the
 // recognised families, on random chains with revolute and prismatic joints.
 #include "vrreg/kinematics/joint_chain.hpp"

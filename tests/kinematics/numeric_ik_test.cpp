@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Numerical IK on chains no closed form covers: every pose FK makes at random joints is solved,
 // and at least 99 % at the branch joints' singular values; every solution reproduces the pose
 // (5e-13 m and rad), the result is the same for the same seed, a start at q returns q, and an

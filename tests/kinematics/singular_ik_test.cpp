@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The IK property at every singularity: for joints drawn at random and for joints pinned at each
 // singular value, FK(q) -> IK contains q (up to the free angle, which is passed as q's own) and
 // FK of every solution reproduces the pose to 1e-12 m and 1e-11 rad. With the default free

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Robots from URDF against two independent references: the FK composed on urdfdom's own tree
 // (joint origins and motions, link by link) and Orocos KDL's chain built from the same tree; the
 // URDF UR5 against the built-in ur5 (FK, IK, joint-space error model) to 1e-12.

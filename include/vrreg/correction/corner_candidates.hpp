@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fiducials found by nominal robot position when one position holds several arm configurations
 // (Procedure 2, Strategy 3, paper section 4.4): every fiducial at a cube corner around a target

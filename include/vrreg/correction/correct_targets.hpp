@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Correcting targets with a registration model: pick fiducials and weights (octuplet, grid or
 // scattered), interpolate the corrections (Eq. 7), correct (Eq. 8) and map to the robot frame.

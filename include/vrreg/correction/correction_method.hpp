@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The one interface every correction method implements (paper Eq. 7 and the field models beyond
 // it): fitted once on a registration's fiducials into an immutable object that predicts the
@@ -32,6 +33,9 @@ struct MethodQuery {
   ConstPoints3Ref robot_nominal_m;     ///< nominal robot positions [m], or 3 x 0 when not needed
   Eigen::Ref<const Eigen::MatrixXd> joints_rad;  ///< commanded joints [rad], or 0 x 0
   std::span<const std::size_t> sequence;  ///< where each point was read (file line), or empty
+  /// Predict beyond the method's support too (a field model's table samples its edge nodes
+  /// there, so that interpolation up to the support's face sees the model, not zeros).
+  bool beyond_support = false;
 };
 
 /// A method's predictions for n points, sized by the caller; predict() fills a range of them.

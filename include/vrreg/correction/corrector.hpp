@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A fitted corrector: a correction method (paper Eq. 7, or a model of the whole field beyond it)
 // fitted once on a registration's fiducials, then asked for any number of points (Eq. 8 and the

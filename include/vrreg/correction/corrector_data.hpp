@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a correction method is fitted on (paper Eq. 6-8): the registration and, per fiducial, its
 // nominal and registered robot positions, its correction, where it was read and its joints.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Beyond the paper (docs/field-models.md): correction methods compared by K-fold cross-validation
 // on the fiducials, and `--interpolation auto`'s choice. Folds are dealt by cluster, not by
@@ -23,6 +24,9 @@ struct CrossValidationRow {
   double rms_m = 0.0;  ///< RMS over the predicted fiducials of |predicted - measured| (3D) [m]
   Eigen::Vector3d rms_axis_m = Eigen::Vector3d::Zero();  ///< the same per sensor axis [m]
   Eigen::Index n_predicted = 0;  ///< fiducials the held-out models could predict
+  /// Held-out fiducials not predicted because they registered outside the box of the fold's
+  /// training fiducials: the method's support, not its failure (not counted against it).
+  Eigen::Index n_outside_training = 0;
   /// RMS (3D) over the fiducials every compared method predicted: what `auto` compares [m].
   double rms_common_m = 0.0;
   /// |predicted - measured|^2 per fiducial [m^2]; NaN where not predicted.

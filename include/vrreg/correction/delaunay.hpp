@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Delaunay tetrahedralization (qhull, reentrant libqhull_r) for scattered RRBC interpolation.
 #include <Eigen/Core>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A smooth vector field predicted at query points: the mean and the standard deviation of the
 // latent field, per axis (kriging, RBF; docs/field-models.md).

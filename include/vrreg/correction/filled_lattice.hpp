@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Trilinear interpolation on the finest lattice of a fiducial layout even when nodes hold no
 // fiducial (beyond the paper: A1's 25 mm grid has a hole at every target): each empty node is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Trilinear RRBC interpolation on a complete regular grid of fiducials (paper Discussion: weights
 // of Eq. 7 from a trilinear scheme; 1/8 each at a cell centre).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // How RRBC carries fiducial corrections to a target (paper Eq. 7): the method and its settings.
 #include <string>

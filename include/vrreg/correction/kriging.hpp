@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Universal kriging (Gaussian-process regression with a polynomial trend) of a 3-vector field,
 // one independent model per axis: the fiducial corrections epsilon_j (paper Eq. 6) as a smooth

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The local size of a model's cross-validated error: at each query point, the RMS over the
 // held-out errors of its nearest fiducials (docs/field-models.md, "Predicted uncertainty").

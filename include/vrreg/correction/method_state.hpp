@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // What a fitted correction method saves so that it corrects again without fitting: named arrays
 // of numbers and texts, which io writes into the model file as one JSON object. Keys carry their

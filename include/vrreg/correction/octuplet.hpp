@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Octuplet stencils (paper section 3.2, dataset B): the 8 fiducials at the corners of a cube of
 // edge a centred at a target's nominal robot-frame position, equal weights 1/8 (Eq. 7).

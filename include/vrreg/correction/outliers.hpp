@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Finding the bad fiducial with RRBC in mind: each fiducial's correction (Eq. 6) is judged against
 // what its neighbours predict for it — a leave-one-out (LOO) local affine fit of the correction

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Radial basis function interpolation of a 3-vector field with a polynomial term and a
 // smoothing parameter chosen per axis by leave-one-out cross-validation

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // RRBC (paper section 3.2): corrections to the fiducials (Eq. 6) and their interpolation (Eq. 7).
 #include <Eigen/Core>
@@ -20,6 +21,9 @@ enum class StencilStatus {
   kOutsideGrid,    ///< grid: registered position outside the grid
   kOutsideHull,    ///< scattered: outside the convex hull of the fiducials (never extrapolated)
   kMissingCorner,  ///< octuplet: a cube corner has no fiducial
+  /// A model of the whole field (kriging, rbf, joint): outside the fiducials' box (and, for the
+  /// joint model, the joint ranges they were measured at): never extrapolated.
+  kOutsideSupport,
 };
 
 /// The fiducials and weights that carry corrections to one target (Eq. 7): sum of weights = 1.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Scattered RRBC interpolation: barycentric weights (Eq. 7) in the Delaunay tetrahedron of the
 // fiducials' nominal robot positions that holds the registered target (linear precision).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A serial chain given joint by joint, as URDF describes one (each joint's origin in its parent
 // link's frame, then its motion about or along an axis), turned into the DH chain every

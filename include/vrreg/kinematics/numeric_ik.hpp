@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Numerical IK for any chain (revolute and prismatic joints, any number up to kMaxJoints):
 // damped least squares (Levenberg-Marquardt on the 6-D pose error, joints projected into their

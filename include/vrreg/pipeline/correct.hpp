@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The front door, step 3: RRBC-corrected robot-frame positions for points measured by the sensor
 // (Eq. 7, 8, then mapped with {R, tau}): what the robot should be commanded to.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The front door, step 2: the true accuracy of a model on independent targets — TRE and RMS_T
 // uncorrected and RRBC-corrected (Eq. 3, 4, 7, 8), gamma, N_bad, Delta TRE (section 5.1) —

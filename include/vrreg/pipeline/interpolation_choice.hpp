@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Which interpolation evaluate and correct use: the model's stored settings, with what the caller
 // chose on top (so it is always clear which wins).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The front door for cells whose marker offset is unknown (hand-eye registration,
 // docs/hand-eye.md): estimate T_robot_sensor and the marker's position on the flange together from

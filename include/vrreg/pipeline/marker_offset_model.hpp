@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The marker offset a model was registered with (hand-eye registration, docs/hand-eye.md): where
 // the marker sits on the flange and the robot whose forward kinematics puts it in the robot frame.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The registration model: what `register_fiducials` builds, the model file holds, and `evaluate`
 // and `correct` use: the transform, the fiducials it came from, their RRBC corrections (Eq. 6),

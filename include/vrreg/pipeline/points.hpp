@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The front door's input: locations measured in both frames, as arrays (one column a location).
 #include <Eigen/Core>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The front door, step 1: register fiducials (Eq. 2), check the rigid-body condition (Eq. 1) and
 // the noise (Eq. 9), and compute the RRBC corrections (Eq. 6) into a model — in one call, with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Robots from URDF (urdfdom): the chain of joints from a base link to a tip link, as the DH chain
 // every kinematics function works on (kinematics/joint_chain.hpp). Revolute, continuous (as

@@ -1,0 +1,292 @@
+// SPDX-License-Identifier: Apache-2.0
+// The contract every correction method keeps (correction/correction_method.hpp), checked on each:
+// an affine correction field is reproduced exactly; the result does not depend on the order of
+// the fiducials or on where the tracker stands (a rigid motion of the sensor frame); a point
+// outside the fiducials' support is flagged, never extrapolated; a predicted sd is finite and
+// positive; saved and restored, a corrector gives the same bits.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "vrreg/correction/corrector.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
+#include "vrreg/kinematics/robots.hpp"
+#include "vrreg_test.hpp"
+
+namespace vrreg {
+namespace {
+
+constexpr double kSpacingM = 0.025;
+
+/// A method as the contract sees it: its settings and whether the cell needs joints.
+struct MethodCase {
+  std::string name;
+  InterpolationMethod method = InterpolationMethod::kLinear;
+  bool tabulate = true;
+  double cube_edge_m = 0.0;
+  /// Where the method reads the field: the nominal robot position (octuplet, joint) or the
+  /// registered one (the others).
+  bool at_nominal = false;
+  bool joints = false;
+  /// How exactly an affine field is reproduced [m]: to roundoff, except kriging, which models
+  /// this cell (off the base axis) in the base cylinder's coordinates, where a Cartesian affine
+  /// field is close to, not in, its quadratic trend (2.7e-8 m here).
+  double affine_tolerance_m = 1e-11;
+  /// How far the result may move when the fiducials are listed in another order or the tracker
+  /// stands elsewhere [m]: roundoff, except the joint model, whose folds for choosing its
+  /// degrees are dealt by index (0.3 um here, 1/60 of the noise).
+  double invariance_m = 1e-8;
+};
+
+std::ostream& operator<<(std::ostream& out, const MethodCase& c) { return out << c.name; }
+
+/// A cell: fiducials on a 5 x 5 x 5 lattice (25 mm), or commanded through the UR5's joints (so the
+/// joint model has a robot), seen by a tracker 2 m away.
+struct Cell {
+  kinematics::SerialChain robot = kinematics::ur5();
+  Points3 nominal_m;      ///< fiducials' nominal positions
+  Eigen::MatrixXd q_rad;  ///< their joints
+  SimilarityTransform T_robot_sensor;
+};
+
+/// Joints reaching the lattice: the UR5's first three joints swept over a small box, the wrist
+/// held, so the positions are its forward kinematics (not a lattice in Cartesian space).
+Cell make_cell(bool lattice) {
+  Cell c;
+  Random rng(3);
+  c.T_robot_sensor.rotation = rng.rotation();
+  c.T_robot_sensor.translation_m = Eigen::Vector3d(1.2, -0.4, 2.0);
+  if (lattice) {
+    c.nominal_m = testing::cube_grid_m(5, kSpacingM, 0.0);
+    c.nominal_m.row(0).array() += 0.35;
+    c.nominal_m.row(2).array() += 0.2;
+    return c;
+  }
+  const int n = 5;
+  c.q_rad.resize(6, n * n * n);
+  c.nominal_m.resize(3, n * n * n);
+  for (int i = 0; i < n * n * n; ++i) {
+    Eigen::VectorXd q(6);
+    q << 0.4 + 0.06 * (i % n), -1.2 + 0.06 * (i / n % n), 1.3 + 0.08 * (i / (n * n)), -1.6, -1.57,
+        0.3;
+    c.q_rad.col(i) = q;
+    c.nominal_m.col(i) = kinematics::forward_kinematics(c.robot, q).translation();
+  }
+  return c;
+}
+
+/// The correction data of `cell` with corrections `field(Y)` (+ noise): sensor readings
+/// X = T^-1 Y - epsilon (Eq. 6 backwards), registered R X + tau.
+template <class Field>
+CorrectorData data_of(const Cell& cell, Field field, double noise_m, std::uint64_t seed) {
+  Random rng(seed);
+  const Eigen::Index n = cell.nominal_m.cols();
+  Points3 corrections(3, n);
+  Points3 sensor(3, n);
+  const SimilarityTransform T_sensor_robot = cell.T_robot_sensor.inverse();
+  for (Eigen::Index j = 0; j < n; ++j) {
+    corrections.col(j) = field(Eigen::Vector3d(cell.nominal_m.col(j))) + rng.normal3(noise_m);
+    sensor.col(j) = T_sensor_robot.apply(Eigen::Vector3d(cell.nominal_m.col(j))) - corrections.col(j);
+  }
+  CorrectorData d = CorrectorData::of(cell.T_robot_sensor, sensor, cell.nominal_m, corrections);
+  if (cell.q_rad.size() > 0) {
+    d.joints_rad = cell.q_rad;
+    d.robot = cell.robot;
+  }
+  if (noise_m > 0.0) d.noise_sd_m = noise_m;
+  return d;
+}
+
+/// Queries at the centres of the interior cells of the fiducials' layout: nominal positions,
+/// joints (the mean of the cell's corner joints) and the sensor readings of those points.
+struct Queries {
+  Points3 nominal_m;
+  Eigen::MatrixXd q_rad;
+  Points3 sensor_m;
+};
+
+template <class Field>
+Queries queries_of(const Cell& cell, Field field, bool lattice) {
+  Queries q;
+  const SimilarityTransform T_sensor_robot = cell.T_robot_sensor.inverse();
+  std::vector<Eigen::Index> corners;  // a cell's first corner
+  const int n = 5;
+  for (int k = 1; k < n - 2; ++k) {
+    for (int j = 1; j < n - 2; ++j) {
+      for (int i = 1; i < n - 2; ++i) corners.push_back(i + n * (j + n * k));
+    }
+  }
+  const auto m = static_cast<Eigen::Index>(corners.size());
+  q.nominal_m.resize(3, m);
+  q.sensor_m.resize(3, m);
+  if (!lattice) q.q_rad.resize(6, m);
+  for (Eigen::Index t = 0; t < m; ++t) {
+    const Eigen::Index c = corners[static_cast<std::size_t>(t)];
+    if (lattice) {
+      q.nominal_m.col(t) = cell.nominal_m.col(c).array() + 0.5 * kSpacingM;
+    } else {
+      Eigen::VectorXd mean = Eigen::VectorXd::Zero(6);
+      for (int corner = 0; corner < 8; ++corner) {
+        mean += cell.q_rad.col(c + (corner & 1) + n * ((corner >> 1) & 1) + n * n * (corner >> 2));
+      }
+      q.q_rad.col(t) = mean / 8.0;
+      q.nominal_m.col(t) = kinematics::forward_kinematics(cell.robot, q.q_rad.col(t)).translation();
+    }
+    q.sensor_m.col(t) = T_sensor_robot.apply(Eigen::Vector3d(q.nominal_m.col(t))) -
+                        field(Eigen::Vector3d(q.nominal_m.col(t)));
+  }
+  return q;
+}
+
+Eigen::Vector3d affine(const Eigen::Vector3d& y) {
+  Eigen::Matrix3d a;
+  a << 2e-3, -1e-3, 5e-4, 7e-4, 1.5e-3, -2e-3, -1e-3, 3e-4, 1e-3;
+  return a * (y - Eigen::Vector3d(0.4, 0.0, 0.25)) + Eigen::Vector3d(2e-4, -1e-4, 3e-4);
+}
+
+Eigen::Vector3d smooth(const Eigen::Vector3d& y) {
+  return 1e-4 * Eigen::Vector3d(std::sin(40.0 * y.x()) + 2.0 * y.y(), std::cos(30.0 * y.z()),
+                                std::sin(25.0 * (y.x() + y.y())));
+}
+
+class CorrectorContract : public ::testing::TestWithParam<MethodCase> {
+ protected:
+  [[nodiscard]] bool lattice() const { return !GetParam().joints; }
+  [[nodiscard]] Corrector fit(const CorrectorData& d) const {
+    CorrectorOptions options;
+    options.interpolation.method = GetParam().method;
+    options.interpolation.cube_edge_m = GetParam().cube_edge_m;
+    options.tabulate = GetParam().tabulate;
+    return Corrector::fit(d, options);
+  }
+  [[nodiscard]] static TargetCorrection correct(const Corrector& c, const Queries& q) {
+    return c.correct(CorrectionQuery(q.sensor_m, q.nominal_m, q.q_rad));
+  }
+};
+
+TEST_P(CorrectorContract, ReproducesAnAffineFieldExactly) {
+  if (testing::sanitized() && GetParam().method == InterpolationMethod::kKriging) GTEST_SKIP();
+  const Cell cell = make_cell(lattice());
+  const CorrectorData d = data_of(cell, affine, 0.0, 1);
+  const Queries q = queries_of(cell, affine, lattice());
+  const TargetCorrection c = correct(fit(d), q);
+  ASSERT_EQ(c.n_flagged, 0);
+  for (Eigen::Index t = 0; t < q.sensor_m.cols(); ++t) {
+    const Eigen::Vector3d at = GetParam().at_nominal ? Eigen::Vector3d(q.nominal_m.col(t))
+                                                     : Eigen::Vector3d(c.uncorrected_robot_m.col(t));
+    EXPECT_LT((c.corrections_sensor_m.col(t) - affine(at)).norm(), GetParam().affine_tolerance_m) << "target " << t;
+  }
+}
+
+TEST_P(CorrectorContract, DoesNotDependOnTheFiducialsOrder) {
+  if (testing::sanitized() && GetParam().method == InterpolationMethod::kKriging) GTEST_SKIP();
+  const Cell cell = make_cell(lattice());
+  const CorrectorData d = data_of(cell, smooth, 2e-5, 2);
+  std::vector<Eigen::Index> reversed(static_cast<std::size_t>(d.size()));
+  std::iota(reversed.rbegin(), reversed.rend(), Eigen::Index{0});
+  const Queries q = queries_of(cell, smooth, lattice());
+  const TargetCorrection a = correct(fit(d), q);
+  const TargetCorrection b = correct(fit(d.subset(reversed)), q);
+  EXPECT_LT((a.corrected_robot_m - b.corrected_robot_m).cwiseAbs().maxCoeff(), GetParam().invariance_m);
+}
+
+TEST_P(CorrectorContract, DoesNotDependOnWhereTheTrackerStands) {
+  if (testing::sanitized() && GetParam().method == InterpolationMethod::kKriging) GTEST_SKIP();
+  Cell cell = make_cell(lattice());
+  const CorrectorData d = data_of(cell, smooth, 2e-5, 4);
+  const Queries q = queries_of(cell, smooth, lattice());
+  const TargetCorrection a = correct(fit(d), q);
+  // The tracker moved by M: its readings are M X, the registration T M^-1, the corrections M_R e.
+  Random rng(9);
+  const RigidTransform M(rng.rotation(), Eigen::Vector3d(0.3, 1.1, -0.7));
+  const SimilarityTransform T_moved = d.T_robot_sensor * SimilarityTransform(M.inverse());
+  const SimilarityTransform T_sensor_robot = d.T_robot_sensor.inverse();
+  Points3 sensor(3, d.size());
+  for (Eigen::Index j = 0; j < d.size(); ++j) {
+    const Eigen::Vector3d x =
+        T_sensor_robot.apply(Eigen::Vector3d(d.fiducials_robot_m.col(j))) - d.corrections_sensor_m.col(j);
+    sensor.col(j) = M.apply(x);
+  }
+  CorrectorData moved = CorrectorData::of(T_moved, sensor, d.fiducials_robot_m,
+                                          M.rotation * d.corrections_sensor_m);
+  moved.joints_rad = d.joints_rad;
+  moved.robot = d.robot;
+  moved.noise_sd_m = d.noise_sd_m;
+  Queries q_moved = q;
+  for (Eigen::Index t = 0; t < q.sensor_m.cols(); ++t)
+    q_moved.sensor_m.col(t) = M.apply(Eigen::Vector3d(q.sensor_m.col(t)));
+  const TargetCorrection b = correct(fit(moved), q_moved);
+  EXPECT_LT((a.corrected_robot_m - b.corrected_robot_m).cwiseAbs().maxCoeff(), GetParam().invariance_m);
+}
+
+TEST_P(CorrectorContract, FlagsPointsOutsideTheSupportAndGivesAPositiveSd) {
+  if (testing::sanitized() && GetParam().method == InterpolationMethod::kKriging) GTEST_SKIP();
+  const Cell cell = make_cell(lattice());
+  const CorrectorData d = data_of(cell, smooth, 2e-5, 5);
+  const Corrector corrector = fit(d);
+  // A field model asked for its table has one (its edge nodes are sampled beyond the support).
+  if (GetParam().tabulate && (GetParam().method == InterpolationMethod::kKriging ||
+                              GetParam().method == InterpolationMethod::kRbf)) {
+    EXPECT_TRUE(corrector.tabulated()) << corrector.describe();
+  }
+  Queries q = queries_of(cell, smooth, lattice());
+  const TargetCorrection inside = correct(corrector, q);
+  EXPECT_EQ(inside.n_flagged, 0);
+  if (corrector.sd_source() != SdSource::kNone) {
+    ASSERT_EQ(inside.predicted_sd_m.size(), q.sensor_m.cols());
+    EXPECT_TRUE(inside.predicted_sd_m.allFinite());
+    EXPECT_GT(inside.predicted_sd_m.minCoeff(), 0.0);
+  }
+  // One point a metre away, one just beyond a face, one with the base joint turned 90 degrees.
+  const SimilarityTransform T_sensor_robot = d.T_robot_sensor.inverse();
+  const Eigen::Vector3d hi = d.fiducials_robot_m.rowwise().maxCoeff();
+  q.nominal_m.col(0) += Eigen::Vector3d(1.0, 0.0, 0.0);
+  q.nominal_m.col(1).x() = hi.x() + 0.4 * kSpacingM;
+  for (int t = 0; t < 2; ++t)
+    q.sensor_m.col(t) = T_sensor_robot.apply(Eigen::Vector3d(q.nominal_m.col(t)));
+  if (q.q_rad.size() > 0) {
+    q.q_rad.col(0)(0) += 1.0;
+    q.q_rad.col(1)(0) += 0.2;
+    q.q_rad.col(2)(0) += 1.5708;
+  }
+  const TargetCorrection outside = correct(corrector, q);
+  for (int t = 0; t < (q.q_rad.size() > 0 ? 3 : 2); ++t) {
+    EXPECT_NE(outside.stencils[static_cast<std::size_t>(t)].status, StencilStatus::kOk) << t;
+    EXPECT_EQ(outside.corrected_robot_m.col(t), outside.uncorrected_robot_m.col(t)) << t;
+  }
+}
+
+TEST_P(CorrectorContract, SavedAndRestoredCorrectsWithTheSameBits) {
+  if (testing::sanitized() && GetParam().method == InterpolationMethod::kKriging) GTEST_SKIP();
+  const Cell cell = make_cell(lattice());
+  const CorrectorData d = data_of(cell, smooth, 2e-5, 6);
+  const Corrector fitted = fit(d);
+  const Corrector restored = Corrector::restore(fitted.save(), d);
+  const Queries q = queries_of(cell, smooth, lattice());
+  const TargetCorrection a = correct(fitted, q);
+  const TargetCorrection b = correct(restored, q);
+  EXPECT_EQ(a.corrected_robot_m, b.corrected_robot_m);
+  EXPECT_EQ(a.predicted_sd_m, b.predicted_sd_m);
+  EXPECT_EQ(fitted.describe(), restored.describe());
+  EXPECT_EQ(restored.method(), fitted.method());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryMethod, CorrectorContract,
+    ::testing::Values(MethodCase{"grid", InterpolationMethod::kGrid},
+                      MethodCase{"scattered", InterpolationMethod::kScattered},
+                      MethodCase{"octuplet", InterpolationMethod::kOctuplet, true, kSpacingM, true},
+                      MethodCase{"trilinear", InterpolationMethod::kTrilinear},
+                      MethodCase{"kriging", InterpolationMethod::kKriging, true, 0.0, false, false, 5e-8},
+                      MethodCase{"kriging_exact", InterpolationMethod::kKriging, false, 0.0, false, false, 5e-8},
+                      MethodCase{"rbf", InterpolationMethod::kRbf},
+                      MethodCase{"rbf_exact", InterpolationMethod::kRbf, false},
+                      MethodCase{"joint", InterpolationMethod::kJoint, true, 0.0, true, true, 1e-11, 1e-6}),
+    [](const ::testing::TestParamInfo<MethodCase>& p) { return p.param.name; });
+
+}  // namespace
+}  // namespace vrreg
