@@ -37,6 +37,10 @@ void InterpolationFlags::add_corrector_flags_to(CLI::App& command) {
   command.add_flag("--exact", exact,
                    "kriging and rbf: correct with the field model itself, not its table (which "
                    "the model file holds, within 1/20 of the noise of it); slower");
+  command.add_flag("--extrapolate", extrapolate,
+                   "kriging, rbf, joint: correct targets outside the fiducials' support too "
+                   "(status 'extrapolated': the correction at the support's nearest point, its sd "
+                   "widened for the distance); without it they are left uncorrected");
 }
 
 InterpolationChoice InterpolationFlags::choice() const {

@@ -24,8 +24,9 @@ struct InterpolationFlags {
   std::optional<double> cube_mm;
   bool refit = false;  ///< evaluate, correct: fit the corrector again
   bool exact = false;  ///< evaluate, correct: the field model itself, not its table
+  bool extrapolate = false;  ///< evaluate, correct: correct outside the support too
   void add_to(CLI::App& command);
-  /// --refit and --exact, for the commands that use a model's corrector.
+  /// --refit, --exact and --extrapolate, for the commands that use a model's corrector.
   void add_corrector_flags_to(CLI::App& command);
   /// As the library's override of a model's stored settings.
   [[nodiscard]] InterpolationChoice choice() const;

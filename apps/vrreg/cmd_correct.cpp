@@ -33,6 +33,7 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   options.config = args.config;
   options.interpolation = args.interpolation.choice();
   options.refit = args.interpolation.refit;
+  options.extrapolate = args.interpolation.extrapolate;
   options.exact = args.interpolation.exact;
   if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
   const CorrectResult r =

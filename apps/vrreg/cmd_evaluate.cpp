@@ -35,6 +35,7 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   options.config = args.config;
   options.interpolation = args.interpolation.choice();
   options.refit = args.interpolation.refit;
+  options.extrapolate = args.interpolation.extrapolate;
   options.exact = args.interpolation.exact;
   apply_evaluate_flags(args.strategy, options);
   if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});

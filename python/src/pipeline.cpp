@@ -106,8 +106,8 @@ sensor: (N, 3) measured target positions, sensor frame, METRES, or a vrreg.Measu
   target rows; as `vrreg evaluate --targets`). robot: (N, 3) nominal positions, robot frame, METRES.
 names, configs, joints: optional per-target extras. config: evaluate this label only.
 interpolation / cube_edge [m]: override the model's. strategy, joint_norm: Procedure 2 overrides.
-arm: the robot for the 'joint' model (default: the model's), as --robot. refit, exact: as
-correct(). Raises ValueError (vrreg.InputError) on bad input.)doc";
+arm: the robot for the 'joint' model (default: the model's), as --robot. refit, exact,
+extrapolate: as correct(). Raises ValueError (vrreg.InputError) on bad input.)doc";
 
 constexpr const char* kCorrectDoc =
     R"doc(RRBC-corrects points measured by the sensor (Eq. 7, 8, then mapped with
@@ -119,7 +119,8 @@ names, configs, joints: optional per-point extras. config, interpolation, cube_e
 the model's; arm: the robot for the 'joint' model (default: the model's). Points outside the
 fiducials keep the uncorrected mapping and a status saying why. The model's fitted corrector is
 used as saved (fit once, correct many): refit=True fits it again, exact=True corrects kriging and
-rbf with the model itself instead of its table.)doc";
+rbf with the model itself instead of its table. extrapolate=True corrects a field model's points
+outside its support too (status EXTRAPOLATED, with a widened predicted sd).)doc";
 
 }  // namespace
 
@@ -160,11 +161,12 @@ void bind_pipeline(py::module_& m) {
          std::optional<int> config, std::optional<std::string> interpolation,
          std::optional<double> cube_edge, std::optional<int> strategy,
          std::optional<std::string> joint_norm, std::optional<std::string> arm, bool refit,
-         bool exact) {
+         bool exact, bool extrapolate) {
         EvaluateOptions options;
         options.config = config;
         options.refit = refit;
         options.exact = exact;
+        options.extrapolate = extrapolate;
         options.robot = arm_of(arm);
         options.interpolation = interpolation_choice(interpolation, cube_edge);
         if (strategy) options.strategy = planning::strategy_from_number(*strategy);
@@ -184,6 +186,7 @@ void bind_pipeline(py::module_& m) {
       py::arg("interpolation") = py::none(), py::arg("cube_edge") = py::none(),
       py::arg("strategy") = py::none(), py::arg("joint_norm") = py::none(),
       py::arg("arm") = py::none(), py::arg("refit") = false, py::arg("exact") = false,
+      py::arg("extrapolate") = false,
       kEvaluateDoc);
 
   m.def(
@@ -191,11 +194,13 @@ void bind_pipeline(py::module_& m) {
       [](const RegistrationModel& model, const py::object& sensor, const py::object& robot,
          const py::object& names, const py::object& configs, const py::object& joints,
          std::optional<int> config, std::optional<std::string> interpolation,
-         std::optional<double> cube_edge, std::optional<std::string> arm, bool refit, bool exact) {
+         std::optional<double> cube_edge, std::optional<std::string> arm, bool refit, bool exact,
+         bool extrapolate) {
         CorrectOptions options;
         options.config = config;
         options.refit = refit;
         options.exact = exact;
+        options.extrapolate = extrapolate;
         options.robot = arm_of(arm);
         options.interpolation = interpolation_choice(interpolation, cube_edge);
         PointExtras extras;
@@ -212,6 +217,7 @@ void bind_pipeline(py::module_& m) {
       py::arg("joints") = py::none(), py::arg("config") = py::none(),
       py::arg("interpolation") = py::none(), py::arg("cube_edge") = py::none(),
       py::arg("arm") = py::none(), py::arg("refit") = false, py::arg("exact") = false,
+      py::arg("extrapolate") = false,
       kCorrectDoc);
 }
 

@@ -132,3 +132,21 @@ def test_million_point_correct_peak_memory_is_one_copy_beyond_the_result(tmp_pat
     assert growth < result + 1.5 * one_copy, (
         f"correct grew the process by {growth / one_copy:.2f} copies of the input; the result "
         f"holds {result / one_copy:.2f}")
+
+
+def test_far_points_are_outside_support_unless_extrapolate_is_asked():
+    axis = np.arange(5) * 0.025
+    robot = np.array(np.meshgrid(axis, axis, axis, indexing="ij")).reshape(3, -1).T.copy()
+    rng = np.random.default_rng(3)
+    sensor = robot + [0.1, 0.2, 0.3] + 2e-4 * np.sin(20 * robot) + rng.normal(scale=2e-5,
+                                                                              size=robot.shape)
+    model = vrreg.register(sensor, robot, interpolation="rbf").model
+    points = np.array([sensor[62], sensor[62] + [1.0, 0.0, 0.0]])
+    plain = vrreg.correct(model, points)
+    assert list(plain.status) == [int(vrreg.StencilStatus.OK),
+                                  int(vrreg.StencilStatus.OUTSIDE_SUPPORT)]
+    assert np.isnan(plain.predicted_sd[1]) and plain.n_flagged == 1
+    far = vrreg.correct(model, points, extrapolate=True)
+    assert far.status[1] == int(vrreg.StencilStatus.EXTRAPOLATED) and far.n_flagged == 0
+    assert far.predicted_sd[1] > far.predicted_sd[0] > 0
+    assert np.array_equal(far.corrected[0], plain.corrected[0])

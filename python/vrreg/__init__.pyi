@@ -27,6 +27,7 @@ class StencilStatus:
     OUTSIDE_HULL: StencilStatus
     MISSING_CORNER: StencilStatus
     OUTSIDE_SUPPORT: StencilStatus
+    EXTRAPOLATED: StencilStatus
     __members__: ClassVar[dict[str, StencilStatus]]
     def __init__(self, value: int) -> None: ...
     def __int__(self) -> int: ...
@@ -264,14 +265,14 @@ def evaluate(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_A
              interpolation: Optional[str] = None, cube_edge: Optional[float] = None,
              strategy: Optional[int] = None, joint_norm: Optional[str] = None,
              arm: Optional[str] = None, refit: bool = False,
-             exact: bool = False) -> EvaluateResult:
+             exact: bool = False, extrapolate: bool = False) -> EvaluateResult:
     """TRE and RMS_T uncorrected and corrected (Eq. 3, 4, 7, 8), gamma, N_bad. Metres."""
 def correct(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = None,
             *, names: Optional[Sequence[str]] = None, configs: Optional[_ArrayLike] = None,
             joints: Optional[_ArrayLike] = None, config: Optional[int] = None,
             interpolation: Optional[str] = None,
             cube_edge: Optional[float] = None, arm: Optional[str] = None, refit: bool = False,
-            exact: bool = False) -> CorrectResult:
+            exact: bool = False, extrapolate: bool = False) -> CorrectResult:
     """RRBC-corrected robot-frame positions to command (Eq. 7, 8). Metres."""
 def read_measurements(path: str, *, require_robot: bool = True) -> Measurements: ...
 def load_model(path: str) -> Model: ...

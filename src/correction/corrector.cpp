@@ -13,6 +13,7 @@
 #include "method_tabulated.hpp"
 #include "point_index.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/registration/fitzpatrick.hpp"
 
 namespace vrreg {
 namespace {
@@ -85,6 +86,58 @@ struct Corrector::Impl {
   Eigen::VectorXd cv_squared_error_m2;  ///< per fiducial, NaN where not predicted (kLocalCv)
   /// kLocalCv: the fiducials with a held-out error, indexed, and their errors in that order.
   std::optional<detail::PointIndex> known_index;
+  /// Extrapolation (CorrectionQuery::extrapolate): the field's gradient, the median over the
+  /// fiducials of |d correction| / |d position| to the nearest fiducial, and its spread,
+  /// sqrt(2) x the RMS (3D) of the corrections about their mean: the RMS difference of the
+  /// field at two points too far apart to be correlated [m].
+  double field_gradient = 0.0;
+  double field_spread_m = 0.0;
+  /// The registration's own error grows with the distance from the fiducials (its rotation's
+  /// lever arm, Fitzpatrick's TRE): the fiducials' positions and their localisation error
+  /// <FLE^2> [m^2], from the known noise, else half the median squared correction difference of
+  /// nearest neighbours (noise and the field's change over a spacing).
+  Points3 fiducials_robot_m;
+  double fle_sq_m2 = 0.0;
+
+  void field_scales(const CorrectorData& data) {
+    const Eigen::Index n = data.size();
+    const Eigen::Vector3d mean_m = data.corrections_sensor_m.rowwise().mean();
+    field_spread_m = std::sqrt(2.0 * (data.corrections_sensor_m.colwise() - mean_m).squaredNorm() /
+                               static_cast<double>(std::max<Eigen::Index>(n, 1)));
+    const detail::PointIndex index(data.fiducials_robot_m);
+    std::vector<double> ratio;
+    std::vector<double> difference_sq;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const std::vector<Eigen::Index> two = index.nearest_k(data.fiducials_robot_m.col(j), 2);
+      if (two.size() < 2) continue;
+      const double d_m = (data.fiducials_robot_m.col(two[1]) - data.fiducials_robot_m.col(j)).norm();
+      if (d_m <= 0.0) continue;
+      const double difference_m =
+          (data.corrections_sensor_m.col(two[1]) - data.corrections_sensor_m.col(j)).norm();
+      ratio.push_back(difference_m / d_m);
+      difference_sq.push_back(difference_m * difference_m);
+    }
+    if (ratio.empty()) return;
+    const auto mid = ratio.begin() + static_cast<std::ptrdiff_t>(ratio.size() / 2);
+    std::nth_element(ratio.begin(), mid, ratio.end());
+    field_gradient = *mid;
+    const auto mid_sq = difference_sq.begin() + static_cast<std::ptrdiff_t>(difference_sq.size() / 2);
+    std::nth_element(difference_sq.begin(), mid_sq, difference_sq.end());
+    fiducials_robot_m = data.fiducials_robot_m;
+    fle_sq_m2 = data.noise_sd_m ? 3.0 * *data.noise_sd_m * *data.noise_sd_m : 0.5 * *mid_sq;
+  }
+
+  /// The sd of the correction at `edge_m` (sd `sd_edge_m` there) used at `at_m`, `moved_m`
+  /// beyond the support: the field's change over the distance, up to its spread, and the
+  /// registration's growth from the edge to the point.
+  [[nodiscard]] double extrapolated_sd_m(double sd_edge_m, double moved_m, const Eigen::Vector3d& at_m,
+                                         const Eigen::Vector3d& edge_m) const {
+    const double growth_m = std::min(field_gradient * moved_m, field_spread_m);
+    const double registration_sq_m2 =
+        std::max(0.0, expected_tre_squared(fiducials_robot_m, at_m, fle_sq_m2) -
+                          expected_tre_squared(fiducials_robot_m, edge_m, fle_sq_m2));
+    return std::sqrt(sd_edge_m * sd_edge_m + growth_m * growth_m + registration_sq_m2);
+  }
   Eigen::VectorXd known_squared_m2;
 
   /// The index of the fiducials whose held-out error is known (kLocalCv).
@@ -128,6 +181,51 @@ struct Corrector::Impl {
       sd(i) = fitted->has_own_sd()                 ? p.sd_m(i)
               : sd_source == SdSource::kLocalCv    ? local_sd_m(at.col(i))
                                                    : cv_rms_m;
+    }
+  }
+
+  /// Corrects the points of `out` outside the support (CorrectionQuery::extrapolate).
+  void extrapolate(const CorrectionQuery& query, TargetCorrection& out) const {
+    std::vector<Eigen::Index> outside;
+    for (std::size_t i = 0; i < out.stencils.size(); ++i) {
+      if (out.stencils[i].status == StencilStatus::kOutsideSupport)
+        outside.push_back(static_cast<Eigen::Index>(i));
+    }
+    const auto k = static_cast<Eigen::Index>(outside.size());
+    if (k == 0) return;
+    Points3 at_m(3, k);
+    const bool joints = query.joints_rad.cols() == query.sensor_m.cols() && query.joints_rad.size() > 0;
+    Eigen::MatrixXd q_rad(joints ? query.joints_rad.rows() : 0, joints ? k : 0);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      at_m.col(j) = out.uncorrected_robot_m.col(outside[static_cast<std::size_t>(j)]);
+      if (joints) q_rad.col(j) = query.joints_rad.col(outside[static_cast<std::size_t>(j)]);
+    }
+    const std::optional<Eigen::VectorXd> moved_m = fitted->clamp_to_support(at_m, q_rad);
+    if (!moved_m) return;
+    MethodPredictions p;
+    p.corrections_sensor_m.resize(3, k);
+    p.stencils.resize(static_cast<std::size_t>(k));
+    if (fitted->has_own_sd()) p.sd_m.resize(k);
+    const Points3 none(3, 0);
+    const MethodQuery edge{at_m, none, q_rad, {}};
+    const Eigen::Index block = std::max<Eigen::Index>(fitted->block_size(), 1);
+    for (Eigen::Index begin = 0; begin < k; begin += block)
+      fitted->predict(edge, begin, std::min(k, begin + block), p);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      if (p.stencils[static_cast<std::size_t>(j)].status != StencilStatus::kOk) continue;
+      const Eigen::Index i = outside[static_cast<std::size_t>(j)];
+      out.stencils[static_cast<std::size_t>(i)].status = StencilStatus::kExtrapolated;
+      out.corrections_sensor_m.col(i) = p.corrections_sensor_m.col(j);
+      out.corrected_sensor_m.col(i) = query.sensor_m.col(i) + p.corrections_sensor_m.col(j);
+      out.corrected_robot_m.col(i) = T_robot_sensor.apply(Eigen::Vector3d(out.corrected_sensor_m.col(i)));
+      if (out.predicted_sd_m.size() > 0) {
+        const double sd_edge_m = fitted->has_own_sd()                 ? p.sd_m(j)
+                                 : sd_source == SdSource::kLocalCv ? local_sd_m(at_m.col(j))
+                                                                   : cv_rms_m;
+        out.predicted_sd_m(i) = extrapolated_sd_m(sd_edge_m, (*moved_m)(j),
+                                                  out.uncorrected_robot_m.col(i), at_m.col(j));
+      }
+      --out.n_flagged;
     }
   }
 
@@ -218,6 +316,7 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
     impl->fitted = std::move(stencils.fitted);
   }
   impl->index_known(data);
+  impl->field_scales(data);
   const InterpolationMethod fitted = impl->fitted->method();
   if (options.tabulate &&
       (fitted == InterpolationMethod::kKriging || fitted == InterpolationMethod::kRbf)) {
@@ -269,6 +368,7 @@ Corrector Corrector::restore(const SavedCorrector& saved, const CorrectorData& d
                      "the saved corrector is " << to_string(saved.method) << ", restored as "
                                                << to_string(impl->fitted->method()));
   impl->index_known(data);
+  impl->field_scales(data);
   return Corrector(std::move(impl));
 }
 
@@ -387,6 +487,7 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
   out.stencils = std::move(p.stencils);
   out.corrections_sensor_m = std::move(p.corrections_sensor_m);
   out.n_flagged = n_flagged.load();
+  if (query.extrapolate && out.n_flagged > 0) m.extrapolate(query, out);
   return out;
 }
 

@@ -4,8 +4,8 @@
 // corrected target is R X + tau - e(q), i.e. the sensor-frame correction -R' e / s.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <iomanip>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -82,6 +82,19 @@ class JointMethod final : public FittedMethod {
         out.corrections_sensor_m.col(i).setZero();
       }
     }
+  }
+
+  // The joint model reads the joints: a target whose joints leave the range seen in the
+  // fiducials moved by an angle, not a length (infinity: the widest sd).
+  [[nodiscard]] std::optional<Eigen::VectorXd> clamp_to_support(
+      Points3& registered_robot_m, Eigen::MatrixXd& joints_rad) const override {
+    Eigen::VectorXd moved_m = support_.clamp(registered_robot_m);
+    for (Eigen::Index i = 0; i < joints_rad.cols(); ++i) {
+      const Eigen::VectorXd q = joints_rad.col(i);
+      joints_rad.col(i) = q.cwiseMax(q_lo_rad_).cwiseMin(q_hi_rad_);
+      if (joints_rad.col(i) != q) moved_m(i) = std::numeric_limits<double>::infinity();
+    }
+    return moved_m;
   }
 
   [[nodiscard]] std::string describe() const override {

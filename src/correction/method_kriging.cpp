@@ -113,6 +113,11 @@ class KrigingMethod final : public FittedMethod {
     }
   }
 
+  [[nodiscard]] std::optional<Eigen::VectorXd> clamp_to_support(
+      Points3& registered_robot_m, Eigen::MatrixXd& /*joints_rad*/) const override {
+    return support_.clamp(registered_robot_m);
+  }
+
   [[nodiscard]] MethodState save() const override {
     MethodState s("kriging");
     model_.save(s);

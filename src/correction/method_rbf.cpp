@@ -33,6 +33,11 @@ class RbfMethod final : public FittedMethod {
     }
   }
 
+  [[nodiscard]] std::optional<Eigen::VectorXd> clamp_to_support(
+      Points3& registered_robot_m, Eigen::MatrixXd& /*joints_rad*/) const override {
+    return support_.clamp(registered_robot_m);
+  }
+
   [[nodiscard]] MethodState save() const override {
     MethodState s("rbf");
     model_.save(s);

@@ -69,6 +69,20 @@ struct SupportBox {
     return (p_m.array() >= lo_m.array() - margin_m).all() &&
            (p_m.array() <= hi_m.array() + margin_m).all();
   }
+  /// FittedMethod::clamp_to_support for a box: each point to its nearest point of the box.
+  [[nodiscard]] Eigen::VectorXd clamp(Points3& points_m) const {
+    return clamp_to_box(points_m, lo_m.array() - margin_m, hi_m.array() + margin_m);
+  }
+  static Eigen::VectorXd clamp_to_box(Points3& points_m, const Eigen::Vector3d& lo_m,
+                                      const Eigen::Vector3d& hi_m) {
+    Eigen::VectorXd moved_m(points_m.cols());
+    for (Eigen::Index i = 0; i < points_m.cols(); ++i) {
+      const Eigen::Vector3d p = points_m.col(i);
+      points_m.col(i) = p.cwiseMax(lo_m).cwiseMin(hi_m);
+      moved_m(i) = (points_m.col(i) - p).norm();
+    }
+    return moved_m;
+  }
 };
 
 /// The support of a field model fitted on `fiducials_robot_m`: their box and a margin of a

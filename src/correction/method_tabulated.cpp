@@ -121,6 +121,11 @@ class TabulatedMethod final : public FittedMethod {
     }
   }
 
+  [[nodiscard]] std::optional<Eigen::VectorXd> clamp_to_support(
+      Points3& registered_robot_m, Eigen::MatrixXd& /*joints_rad*/) const override {
+    return SupportBox::clamp_to_box(registered_robot_m, table_.support_lo_m, table_.support_hi_m);
+  }
+
   [[nodiscard]] MethodState save() const override {
     MethodState s = exact_state_;
     s.put_text(kForm, "tabulated");

@@ -42,6 +42,8 @@ const char* to_string(StencilStatus status) {
       return "missing corner";
     case StencilStatus::kOutsideSupport:
       return "outside support";
+    case StencilStatus::kExtrapolated:
+      return "extrapolated";
   }
   return "unknown";
 }

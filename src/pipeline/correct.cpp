@@ -37,7 +37,8 @@ CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& 
     nominal = set->robot_points(rows);
   }
   const pipeline_detail::CorrectorRequest request{out.interpolation, strategy, norm, options.robot,
-                                                  options.refit, options.exact};
+                                                  options.refit, options.exact,
+                                                  options.extrapolate};
   out.correction =
       pipeline_detail::correct_rows(model, *set, rows, request, nominal, &out.cross_validation);
   pipeline_detail::labels_of(*set, rows, out.names, out.configs);
@@ -69,7 +70,8 @@ CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& poin
   out.interpolation = options.interpolation.apply(model.interpolation);
   const pipeline_detail::CorrectorRequest request{out.interpolation, model.procedure2.strategy,
                                                   model.procedure2.joint_norm, options.robot,
-                                                  options.refit, options.exact};
+                                                  options.refit, options.exact,
+                                                  options.extrapolate};
   const Corrector corrector = pipeline_detail::corrector_for(model, request);
   if (out.interpolation.method == InterpolationMethod::kAuto) {
     out.cross_validation = corrector.cross_validation();
@@ -87,9 +89,10 @@ CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& poin
       needs.nominal_robot ? static_cast<std::size_t>(points.size()) : 0, 0);
   const Points3 no_points(3, 0);
   const Eigen::MatrixXd no_joints(0, 0);
-  out.correction = corrector.correct(
-      CorrectionQuery(points.sensor_m, needs.nominal_robot ? points.robot_m : no_points,
-                      needs.joints ? points.joints_rad : no_joints, sequence));
+  CorrectionQuery query(points.sensor_m, needs.nominal_robot ? points.robot_m : no_points,
+                        needs.joints ? points.joints_rad : no_joints, sequence);
+  query.extrapolate = options.extrapolate;
+  out.correction = corrector.correct(query);
   out.names = points.names;
   for (const int config : points.configs) out.configs.emplace_back(config);
   return out;

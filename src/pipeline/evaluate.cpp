@@ -52,7 +52,7 @@ EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet
   out.interpolation = options.interpolation.apply(model.interpolation);
   const pipeline_detail::CorrectorRequest request{out.interpolation, out.strategy, norm,
                                                   options.robot, options.refit,
-                                                  options.exact};
+                                                  options.exact, options.extrapolate};
   out.correction = pipeline_detail::correct_rows(model, *set, rows, request, out.targets_robot_m,
                                                  &out.cross_validation);
   // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.

@@ -29,6 +29,7 @@ struct CorrectorRequest {
   std::optional<kinematics::SerialChain> robot;
   bool refit = false;  ///< fit again even when the model's corrector answers the request
   bool exact = false;  ///< the field model itself, not its table (CorrectorOptions::tabulate)
+  bool extrapolate = false;  ///< correct outside the support too (CorrectionQuery::extrapolate)
 };
 
 /// The model's corrector when it was fitted for the request, else one fitted now on the model's

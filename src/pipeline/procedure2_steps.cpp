@@ -115,8 +115,10 @@ TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementS
     const Eigen::MatrixXd joints =
         corrector.needs().joints ? joints_of(set, rows) : Eigen::MatrixXd(0, 0);
     const std::vector<std::size_t> lines = source_lines(set, rows);
-    return corrector.correct(
-        CorrectionQuery(set.sensor_points(rows), nominal_robot_m, joints, lines));
+    const Points3 sensor_m = set.sensor_points(rows);  // the query is a view: kept alive here
+    CorrectionQuery query(sensor_m, nominal_robot_m, joints, lines);
+    query.extrapolate = request.extrapolate;
+    return corrector.correct(query);
   };
   // The field models and Strategy 3 need more of the targets' file (joints, configurations):
   // their errors name it.

@@ -69,6 +69,30 @@ TEST_F(FieldModelCli, AutoPrintsTheTableAndRegisterStoresTheChoice) {
   EXPECT_EQ(model["interpolation"]["method"], chosen);
 }
 
+// A field model says "outside support" of a point a metre from its fiducials and leaves it
+// uncorrected; --extrapolate corrects it, "extrapolated", with a wider sd than inside.
+TEST_F(FieldModelCli, FarPointsAreOutsideSupportUnlessExtrapolateIsAsked) {
+  ASSERT_EQ(run_vrreg_in(dir_, "register --fiducials " + cell_ + " --interpolation rbf -o r.json")
+                .status,
+            0);
+  write_text(dir_ / "p.csv",
+             "point,role,sensor_x_mm,sensor_y_mm,sensor_z_mm\n"
+             "IN,target,247.03213594049433,647.2465665636704,2091.6156169529377\n"
+             "FAR,target,1247.03213594049433,647.2465665636704,2091.6156169529377\n");
+  const CliResult plain = run_vrreg_in(dir_, "correct --model r.json --points p.csv -o c.csv --json");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_EQ(nlohmann::json::parse(plain.out)["n_flagged"], 1) << plain.out;
+  const std::string flagged = read_text(dir_ / "c.csv");
+  EXPECT_NE(flagged.find("\nIN,,ok,"), std::string::npos) << flagged;
+  EXPECT_NE(flagged.find("\nFAR,,outside support,"), std::string::npos) << flagged;
+  const CliResult far =
+      run_vrreg_in(dir_, "correct --model r.json --points p.csv -o e.csv --json --extrapolate");
+  ASSERT_EQ(far.status, 0) << far.err;
+  EXPECT_EQ(nlohmann::json::parse(far.out)["n_flagged"], 0) << far.out;
+  const std::string extrapolated = read_text(dir_ / "e.csv");
+  EXPECT_NE(extrapolated.find("\nFAR,,extrapolated,"), std::string::npos) << extrapolated;
+}
+
 TEST_F(FieldModelCli, JointWithoutJointsOrRobotSaysWhy) {
   const CliResult e =
       run_vrreg_in(dir_, "evaluate --model m.json --targets " + cell_ + " --interpolation joint");

@@ -254,9 +254,31 @@ TEST_P(CorrectorContract, FlagsPointsOutsideTheSupportAndGivesAPositiveSd) {
     q.q_rad.col(2)(0) += 1.5708;
   }
   const TargetCorrection outside = correct(corrector, q);
-  for (int t = 0; t < (q.q_rad.size() > 0 ? 3 : 2); ++t) {
+  const int n_out = q.q_rad.size() > 0 ? 3 : 2;
+  for (int t = 0; t < n_out; ++t) {
     EXPECT_NE(outside.stencils[static_cast<std::size_t>(t)].status, StencilStatus::kOk) << t;
     EXPECT_EQ(outside.corrected_robot_m.col(t), outside.uncorrected_robot_m.col(t)) << t;
+  }
+  // Asked to extrapolate, a field model corrects them with a wider sd than inside; the paper's
+  // stencils still never do.
+  CorrectionQuery far(q.sensor_m, q.nominal_m, q.q_rad);
+  far.extrapolate = true;
+  const TargetCorrection extrapolated = corrector.correct(far);
+  const bool field = GetParam().method == InterpolationMethod::kKriging ||
+                     GetParam().method == InterpolationMethod::kRbf ||
+                     GetParam().method == InterpolationMethod::kJoint;
+  for (int t = 0; t < n_out; ++t) {
+    const StencilStatus status = extrapolated.stencils[static_cast<std::size_t>(t)].status;
+    if (!field) {
+      EXPECT_EQ(status, outside.stencils[static_cast<std::size_t>(t)].status) << t;
+      continue;
+    }
+    EXPECT_EQ(status, StencilStatus::kExtrapolated) << t;
+    EXPECT_TRUE(std::isfinite(extrapolated.predicted_sd_m(t)));
+    EXPECT_GT(extrapolated.predicted_sd_m(t), inside.predicted_sd_m.minCoeff()) << t;
+  }
+  for (Eigen::Index t = n_out; t < q.sensor_m.cols(); ++t) {
+    EXPECT_EQ(extrapolated.corrected_robot_m.col(t), outside.corrected_robot_m.col(t)) << t;
   }
 }
 

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -87,6 +88,14 @@ class FittedMethod {
   /// Fills entries [begin, end) of `out` (sized for the whole query).
   virtual void predict(const MethodQuery& query, Eigen::Index begin, Eigen::Index end,
                        MethodPredictions& out) const = 0;
+  /// Moves points outside the method's support to its nearest point (registered positions and,
+  /// for the joint model, joints), in place, and returns how far each moved [m] (infinity where
+  /// the distance has no length, e.g. a joint clamped into its range); nullopt for methods that
+  /// never answer outside their layout (the paper's stencils).
+  [[nodiscard]] virtual std::optional<Eigen::VectorXd> clamp_to_support(
+      Points3& /*registered_robot_m*/, Eigen::MatrixXd& /*joints_rad*/) const {
+    return std::nullopt;
+  }
   /// What restore() needs besides the fiducials: fitted parameters, factorisations' inputs.
   [[nodiscard]] virtual MethodState save() const = 0;
   /// The same method on a subset of the fiducials (a cross-validation fold). Methods whose

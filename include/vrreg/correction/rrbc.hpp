@@ -24,6 +24,9 @@ enum class StencilStatus {
   /// A model of the whole field (kriging, rbf, joint): outside the fiducials' box (and, for the
   /// joint model, the joint ranges they were measured at): never extrapolated.
   kOutsideSupport,
+  /// Outside the support, corrected anyway because the caller asked (extrapolate): the
+  /// correction at the nearest point of the support, its sd widened for the distance.
+  kExtrapolated,
 };
 
 /// The fiducials and weights that carry corrections to one target (Eq. 7): sum of weights = 1.
