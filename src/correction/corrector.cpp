@@ -132,7 +132,9 @@ struct Corrector::Impl {
   /// registration's growth from the edge to the point.
   [[nodiscard]] double extrapolated_sd_m(double sd_edge_m, double moved_m, const Eigen::Vector3d& at_m,
                                          const Eigen::Vector3d& edge_m) const {
-    const double growth_m = std::min(field_gradient * moved_m, field_spread_m);
+    // A move without a length (a joint clamped into its range) takes the whole spread.
+    const double growth_m =
+        std::isfinite(moved_m) ? std::min(field_gradient * moved_m, field_spread_m) : field_spread_m;
     const double registration_sq_m2 =
         std::max(0.0, expected_tre_squared(fiducials_robot_m, at_m, fle_sq_m2) -
                           expected_tre_squared(fiducials_robot_m, edge_m, fle_sq_m2));
