@@ -59,6 +59,13 @@ CLI::Option* add_output_option(CLI::App& command, const std::string& names, std:
   return command.add_option(names, path, help)->check(file_name);
 }
 
+CLI::Option* add_input_option(CLI::App& command, const std::string& names, std::string& value,
+                              const std::string& help, const std::string& needs) {
+  const CLI::Validator not_empty(
+      [needs](std::string& text) { return text.empty() ? "needs " + needs : std::string(); }, "");
+  return command.add_option(names, value, help)->check(not_empty);
+}
+
 CLI::Validator non_negative_seed() {
   return {[](std::string& value) {
             const std::size_t first = value.find_first_not_of(" \t");

@@ -52,6 +52,11 @@ void naming_file(const std::string& path, F&& run) {
 CLI::Option* add_output_option(CLI::App& command, const std::string& names, std::string& path,
                                const std::string& help);
 
+/// Adds an input option (a file, or a robot name or file): when given, its value may not be empty
+/// (an empty one would be opened as ""), and the usage error names the option.
+CLI::Option* add_input_option(CLI::App& command, const std::string& names, std::string& value,
+                              const std::string& help, const std::string& needs = "a file name");
+
 /// Refuses a negative seed: CLI11 would read "-1" into an unsigned seed as 2^64 - 1.
 CLI::Validator non_negative_seed();
 

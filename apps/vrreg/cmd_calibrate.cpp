@@ -42,7 +42,8 @@ std::vector<std::uint64_t> parse_seeds(const std::string& text) {
         VRREG_THROW_UNLESS(used == part.size() - dash - 1 && last >= first && last - first < 10000,
                            "");
       }
-      for (std::uint64_t s = first; s <= last; ++s) seeds.push_back(s);
+      // Counted, not compared with `last`: a range ending at 2^64 - 1 would never end.
+      for (std::uint64_t k = 0; k <= last - first; ++k) seeds.push_back(first + k);
     } catch (const std::exception&) {
       VRREG_THROW_UNLESS(false, "--seeds: cannot read '" << part << "' (use e.g. 1-10 or 1,3,5-7)");
     }
@@ -86,8 +87,9 @@ void add_calibrate_command(CLI::App& app) {
       "the paper's (the table of docs/testbed-calibration.md)");
   cmd->group("Developer commands");
   cmd->add_option("--seeds", args->seeds, "seeds, e.g. 1-10 or 1,3,5-7")->capture_default_str();
-  cmd->add_option("--ur5-errors", args->ur5_errors, "error-model file for the UR5 test bed");
-  cmd->add_option("--lwr4-errors", args->lwr4_errors, "error-model file for the LWR test bed");
+  add_input_option(*cmd, "--ur5-errors", args->ur5_errors, "error-model file for the UR5 test bed");
+  add_input_option(*cmd, "--lwr4-errors", args->lwr4_errors,
+                   "error-model file for the LWR test bed");
   cmd->add_option("--only", args->only, "run one test bed only")
       ->check(CLI::IsMember({"ur5", "lwr4"}));
   add_output_option(*cmd, "-o,--output", args->output, "also write the Markdown tables here");

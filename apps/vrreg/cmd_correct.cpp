@@ -82,18 +82,21 @@ void add_correct_command(CLI::App& app) {
       "correct",
       "RRBC-correct points measured by the sensor and map them to the robot frame "
       "(paper Eq. 7, 8)");
-  cmd->add_option("--model", args->model, "model JSON written by 'vrreg register -o'")->required();
-  cmd->add_option("--points", args->points,
-                  "measurement CSV; its target rows are corrected (robot columns optional)")
+  add_input_option(*cmd, "--model", args->model, "model JSON written by 'vrreg register -o'")
+      ->required();
+  add_input_option(*cmd, "--points", args->points,
+                   "measurement CSV; its target rows are corrected (robot columns optional)")
       ->required();
   cmd->add_option("--config", args->config, "use only rows with this configuration label");
   args->interpolation.add_to(*cmd);
   args->interpolation.add_corrector_flags_to(*cmd);
   add_output_option(*cmd, "-o,--output", args->output, "write corrected positions (CSV, mm) here")
       ->required();
-  cmd->add_option("--robot", args->robot,
-                  "with --interpolation joint or auto: the robot whose joints the file gives (ur5, "
-                  "lwr4, ... or a robot file, its tool the marker); default: the model's");
+  add_input_option(
+      *cmd, "--robot", args->robot,
+      "with --interpolation joint or auto: the robot whose joints the file gives (ur5, "
+      "lwr4, ... or a robot file, its tool the marker); default: the model's",
+      "a robot name or file");
   cmd->add_flag("--json", args->json, "print a JSON summary instead of the table");
   cmd->callback([args] { run_correct(*args); });
 }

@@ -124,8 +124,9 @@ void add_evaluate_command(CLI::App& app) {
       "evaluate",
       "measure a model's accuracy on targets measured in both frames: TRE and RMS_T "
       "uncorrected and RRBC-corrected (paper Eq. 3, 4, 7, 8)");
-  cmd->add_option("--model", args->model, "model JSON written by 'vrreg register -o'")->required();
-  cmd->add_option("--targets", args->targets, "measurement CSV; its target rows are used")
+  add_input_option(*cmd, "--model", args->model, "model JSON written by 'vrreg register -o'")
+      ->required();
+  add_input_option(*cmd, "--targets", args->targets, "measurement CSV; its target rows are used")
       ->required();
   cmd->add_option("--config", args->config,
                   "use only target rows with this configuration label (default: the model's)");
@@ -134,9 +135,11 @@ void add_evaluate_command(CLI::App& app) {
   args->strategy.add_to(*cmd, false);
   add_output_option(*cmd, "--per-target", args->per_target,
                     "write per-target errors (CSV, mm) here");
-  cmd->add_option("--robot", args->robot,
-                  "with --interpolation joint or auto: the robot whose joints the files give (ur5, "
-                  "lwr4, ... or a robot file, its tool the marker); default: the model's");
+  add_input_option(
+      *cmd, "--robot", args->robot,
+      "with --interpolation joint or auto: the robot whose joints the files give (ur5, "
+      "lwr4, ... or a robot file, its tool the marker); default: the model's",
+      "a robot name or file");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_evaluate(*args); });
 }

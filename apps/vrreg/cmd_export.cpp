@@ -41,7 +41,7 @@ void add_export_command(CLI::App& app) {
       "export",
       "write a model's T_robot_sensor (sensor -> robot; and the marker offset) as YAML "
       "(easy_handeye style), a URDF joint or JSON with a 4x4 matrix, in metres");
-  cmd->add_option("--model", args->model, "model JSON of vrreg register")->required();
+  add_input_option(*cmd, "--model", args->model, "model JSON of vrreg register")->required();
   cmd->add_option("--format", args->format, "yaml, urdf or json")
       ->required()
       ->check(CLI::IsMember({"yaml", "urdf", "json"}));

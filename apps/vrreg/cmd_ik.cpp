@@ -208,9 +208,10 @@ void add_ik_command(CLI::App& app) {
       "inverse kinematics: every joint solution of a flange (or TCP) pose, labelled by "
       "arm configuration (UR: up to 8; LWR 4+: up to 8 per arm angle psi; any other chain: "
       "numerically, one per configuration class found); exit status 3 when there is none");
-  cmd->add_option("robot", args->robot,
-                  "ur3, ur5, ur10, ur5e, lwr4, or a robot file (URDF, or JSON/YAML: a DH table "
-                  "or a URDF with its base and tip link)")
+  add_input_option(*cmd, "robot", args->robot,
+                   "ur3, ur5, ur10, ur5e, lwr4, or a robot file (URDF, or JSON/YAML: a DH table "
+                   "or a URDF with its base and tip link)",
+                   "a robot name or file")
       ->required();
   cmd->add_option("--xyz-mm", args->xyz_mm, "position X Y Z in mm")->expected(3)->required();
   cmd->add_option("--rpy-deg", args->rpy_deg,

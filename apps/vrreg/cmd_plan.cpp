@@ -11,16 +11,17 @@
 #include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "plan_output.hpp"
+#include "plan_program_cli.hpp"
 #include "robot_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
+#include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/parts_csv.hpp"
 #include "vrreg/io/plan_csv.hpp"
 #include "vrreg/kinematics/pose.hpp"
 #include "vrreg/kinematics/robots.hpp"
 #include "vrreg/planning/offset_poses.hpp"
-#include "plan_program_cli.hpp"
 #include "vrreg/simulation/testbed.hpp"
 
 namespace vrreg::cli {
@@ -122,9 +123,12 @@ void run_plan_unchecked(const PlanArgs& args) {
   }
   planning::PlanResult plan = planning::make_plan(setup.chain, setup.parts, setup.options);
   if (!plan.ok()) {
-    throw InputError(args.parts + ": " + plan.message +
-                     ". Check that the part points are in the robot base frame, or change "
-                     "--rpy-deg, --home-deg or --psi-deg (see vrreg ik)");
+    // The line of the first part point that (or one of whose fiducials) cannot be reached.
+    const int part = plan.unreachable.empty() ? -1 : plan.unreachable.front().part;
+    throw io::FileError(args.parts, part < 0 ? 0 : records[static_cast<std::size_t>(part)].line,
+                        plan.message +
+                            ". Check that the part points are in the robot base frame, or change "
+                            "--rpy-deg, --home-deg or --psi-deg (see vrreg ik)");
   }
   if (args.offset_tilt_deg) {  // hand-eye: tilts about two axes make the marker offset observable
     const planning::OffsetPoseSummary poses = planning::add_offset_poses(
@@ -136,10 +140,14 @@ void run_plan_unchecked(const PlanArgs& args) {
         std::to_string(poses.n_unreachable) +
         " unreachable, left out); register with --estimate-marker-offset");
   }
-  if (!args.export_format.empty()) write_plan_program(args, setup, plan);
+  // Every output is made before any is written, then all are written or none.
+  std::vector<io::OutputFile> outputs;
+  if (!args.export_format.empty()) outputs.push_back({args.program, plan_program(args, plan)});
   if (!args.output.empty()) {
-    io::write_plan_csv(args.output, plan_rows(plan), plan_comments(args, setup, plan));
+    outputs.push_back(
+        {args.output, io::format_plan_csv(plan_rows(plan), plan_comments(args, setup, plan))});
   }
+  io::write_files_atomically(outputs);
   if (args.json) {
     print_json(plan_json(args, setup, plan));
   } else {
@@ -168,9 +176,9 @@ void add_plan_command(CLI::App& app) {
       "plan",
       "Procedure 1 (paper section 6): where to measure fiducials around M part points, "
       "with joints and a visiting order, as a plan CSV");
-  cmd->add_option("--parts", args->parts,
-                  "CSV of part points: point,robot_x_mm,robot_y_mm,robot_z_mm (robot base frame), "
-                  "or a measurement CSV whose target rows are the part points")
+  add_input_option(*cmd, "--parts", args->parts,
+                   "CSV of part points: point,robot_x_mm,robot_y_mm,robot_z_mm (robot base frame), "
+                   "or a measurement CSV whose target rows are the part points")
       ->required();
   cmd->add_option("--halfwidth-mm", args->halfwidth_mm,
                   "placement tolerance S in mm: each part point may land within +-S (rounded up "
@@ -180,9 +188,10 @@ void add_plan_command(CLI::App& app) {
   cmd->add_option("--spacing-mm", args->spacing_mm, "grid spacing A in mm")
       ->required()
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--robot", args->robot,
-                  "ur5, lwr4 (defaults from the simulated test bed), ur3, ur10, ur5e, or a robot "
-                  "file (URDF, or JSON/YAML)")
+  add_input_option(*cmd, "--robot", args->robot,
+                   "ur5, lwr4 (defaults from the simulated test bed), ur3, ur10, ur5e, or a robot "
+                   "file (URDF, or JSON/YAML)",
+                   "a robot name or file")
       ->required();
   cmd->add_option("--sigma-noise-mm", args->sigma_noise_mm,
                   "noise sigma_noise in mm for d_min > 2.5 sigma_noise (Eq. 9); default the "

@@ -220,7 +220,8 @@ void add_register_command(CLI::App& app) {
       "register",
       "register the fiducials of a measurement file (sensor -> robot, paper Eq. 2) "
       "and compute their RRBC corrections (Eq. 6)");
-  cmd->add_option("--fiducials", args->fiducials, "measurement CSV; its fiducial rows are used")
+  add_input_option(*cmd, "--fiducials", args->fiducials,
+                   "measurement CSV; its fiducial rows are used")
       ->required();
   cmd->add_option("--config", args->config, "use only rows with this configuration label");
   cmd->add_flag("--scale", args->scale, "also fit a uniform scale (off in the paper)");

@@ -99,8 +99,9 @@ void add_report_command(CLI::App& app) {
       "report",
       "write one self-contained HTML report (charts work offline): for your cell "
       "(--model, --targets) or for the paper's experiments (--reproduce DIR)");
-  cmd->add_option("--model", args->model, "model JSON written by 'vrreg register -o'");
-  cmd->add_option("--targets", args->targets, "measurement CSV; its target rows are evaluated");
+  add_input_option(*cmd, "--model", args->model, "model JSON written by 'vrreg register -o'");
+  add_input_option(*cmd, "--targets", args->targets,
+                   "measurement CSV; its target rows are evaluated");
   cmd->add_option("--config", args->config,
                   "use only target rows with this configuration label (default: the model's)");
   args->interpolation.add_to(*cmd);
@@ -108,11 +109,12 @@ void add_report_command(CLI::App& app) {
   cmd->add_option("--sigma-rep-mm", args->sigma_rep_mm,
                   "robot repeatability in mm, for sigma_noise and rho (UR5 0.1, LWR 4+ 0.05)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--reproduce", args->reproduce,
-                  "directory written by 'vrreg reproduce --out DIR' (reads DIR/reproduce.json)");
-  cmd->add_option("--plan", args->plan,
-                  "plan CSV from 'vrreg plan': adds its fiducial layout "
-                  "(paper Fig. 16)");
+  add_input_option(*cmd, "--reproduce", args->reproduce,
+                   "directory written by 'vrreg reproduce --out DIR' (reads DIR/reproduce.json)",
+                   "a directory name");
+  add_input_option(*cmd, "--plan", args->plan,
+                   "plan CSV from 'vrreg plan': adds its fiducial layout "
+                   "(paper Fig. 16)");
   add_output_option(*cmd, "-o,--output", args->output, "the HTML file to write")->required();
   cmd->add_flag("--json", args->json, "print one JSON object (output, charts, verdict)");
   cmd->callback([args] { run_report(*args); });

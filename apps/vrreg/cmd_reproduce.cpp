@@ -14,6 +14,7 @@
 #include "progress_bar.hpp"
 #include "report_cli.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/random.hpp"
 #include "vrreg/experiments/beyond_report.hpp"
 #include "vrreg/experiments/reproduction_csv.hpp"
 #include "vrreg/experiments/reproduction_json.hpp"
@@ -36,7 +37,7 @@ struct ReproduceArgs {
   bool beyond = false;
 };
 
-// Every output file of --out, written whole or not at all.
+// Every output file of --out: all of them, each whole, or none.
 std::vector<std::string> write_outputs(const std::string& dir,
                                        const std::vector<experiments::Reproduction>& runs,
                                        const experiments::CellTable& cells,
@@ -58,10 +59,12 @@ std::vector<std::string> write_outputs(const std::string& dir,
   };
   if (!first.beyond.empty()) files.emplace_back("beyond.csv", ex::beyond_csv(cells, first.beyond));
   std::vector<std::string> names;
-  for (const auto& [name, text] : files) {
-    io::write_file_atomically((std::filesystem::path(dir) / name).string(), text);
+  std::vector<io::OutputFile> outputs;
+  for (auto& [name, text] : files) {
+    outputs.push_back({(std::filesystem::path(dir) / name).string(), std::move(text)});
     names.push_back(name);
   }
+  io::write_files_atomically(outputs);
   return names;
 }
 
@@ -82,6 +85,7 @@ void run_reproduce(const ReproduceArgs& args) {
   namespace ex = experiments;
   VRREG_THROW_UNLESS(args.seeds >= 1 && args.seeds <= 1000,
                      "--seeds must be between 1 and 1000, got " << args.seeds);
+  check_seed_run(args.seed, static_cast<std::uint64_t>(args.seeds), "--seed, --seeds");
   std::vector<std::uint64_t> seeds;
   for (int k = 0; k < args.seeds; ++k) seeds.push_back(args.seed + static_cast<std::uint64_t>(k));
   ex::ReproductionOptions options;

@@ -5,10 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/plan_csv.hpp"
 #include "vrreg/robot_io/error_model_file.hpp"
@@ -76,15 +78,23 @@ void run_simulate(const SimulateArgs& args) {
     options.marker_flange_m = simulation::kRealisticMarkerFlangeM;
   }
   if (!args.errors.empty()) options.errors = io::read_error_model_file(args.errors, testbed);
+  // Both outputs are made before either is written, then written together or not at all.
+  std::vector<io::OutputFile> outputs;
   if (!args.write_errors.empty()) {
-    io::write_error_model_file(args.write_errors, options.errors.value_or(testbed.default_errors),
-                               testbed.name);
+    outputs.push_back(
+        {args.write_errors,
+         io::format_error_model(options.errors.value_or(testbed.default_errors), testbed.name)});
+  }
+  const auto say_errors_written = [&] {
+    if (args.write_errors.empty()) return;
     std::printf("error model of test bed %s written to %s\n", testbed.name.c_str(),
                 args.write_errors.c_str());
-  }
+  };
   if (args.output.empty()) {
     VRREG_THROW_UNLESS(!args.write_errors.empty(),
                        "simulate: nothing to do: give -o FILE.csv (and a DATASET)");
+    io::write_files_atomically(outputs);
+    say_errors_written();
     return;
   }
   VRREG_THROW_UNLESS(args.plan.empty() || args.dataset.empty(),
@@ -99,7 +109,11 @@ void run_simulate(const SimulateArgs& args) {
     simulation::check_dataset(testbed.kind, dataset);
     data = simulation::simulate_dataset(testbed, dataset, options);
   }
-  io::write_simulated_dataset_csv(args.output, data);
+  outputs.push_back(
+      {args.output, io::format_measurement_csv(io::simulated_readings(data),
+                                               io::simulated_dataset_comments(data))});
+  io::write_files_atomically(outputs);
+  say_errors_written();
   std::size_t targets = 0;
   for (const auto& location : data.locations) targets += location.role == Role::kTarget ? 1 : 0;
   const std::string what =
@@ -126,16 +140,16 @@ void add_simulate_command(CLI::App& app) {
       "lwr4: grid), or measure a plan (--plan), and write it as a measurement CSV");
   cmd->add_option("TESTBED", args->testbed, "ur5 or lwr4")->required();
   cmd->add_option("DATASET", args->dataset, "ur5: A1, A2 or B; lwr4: grid (or give --plan)");
-  cmd->add_option("--plan", args->plan,
-                  "measure this plan of 'vrreg plan --robot TESTBED' instead of a dataset: the "
-                  "robot takes its joints, the tracker reads each location K times; then "
-                  "'vrreg register' and 'vrreg evaluate --cube-mm SPACING' predict its accuracy");
+  add_input_option(*cmd, "--plan", args->plan,
+                   "measure this plan of 'vrreg plan --robot TESTBED' instead of a dataset: the "
+                   "robot takes its joints, the tracker reads each location K times; then "
+                   "'vrreg register' and 'vrreg evaluate --cube-mm SPACING' predict its accuracy");
   add_seed_option(*cmd, "--seed", args->seed,
                   "draws the robot's errors and the noise; the same seed gives the same file")
       ->capture_default_str();
-  cmd->add_option("--errors", args->errors,
-                  "error-model file (JSON or YAML) over the test bed's defaults; see "
-                  "--write-errors");
+  add_input_option(*cmd, "--errors", args->errors,
+                   "error-model file (JSON or YAML) over the test bed's defaults; see "
+                   "--write-errors");
   CLI::Option* marker =
       cmd->add_option("--marker-flange-mm", args->marker_flange_mm,
                       "X Y Z: where the tracked marker really sits in the flange frame, mm (a cell "

@@ -5,7 +5,6 @@
 
 #include "cli_support.hpp"
 #include "vrreg/core/check.hpp"
-#include "vrreg/io/atomic_write.hpp"
 #include "vrreg/planning/robot_program.hpp"
 
 namespace vrreg::cli {
@@ -29,18 +28,15 @@ void add_program_options(CLI::App& command, PlanArgs& args) {
       ->check(CLI::Range(1, 1000));
 }
 
-void write_plan_program(const PlanArgs& args, const PlanSetup& setup,
-                        const planning::PlanResult& plan) {
+std::string plan_program(const PlanArgs& args, const planning::PlanResult& plan) {
   std::vector<planning::ProgramLocation> locations;
   for (const planning::PlannedLocation& l : plan.locations) {
     locations.push_back({l.point, l.role, l.config.to_string(), l.q_rad});
   }
   planning::ProgramOptions options;
   if (args.repeats > 0) options.repeats = args.repeats;
-  (void)setup;
-  io::write_file_atomically(
-      args.program, planning::robot_program(
-                        locations, planning::parse_program_format(args.export_format), options));
+  return planning::robot_program(locations, planning::parse_program_format(args.export_format),
+                                 options);
 }
 
 }  // namespace vrreg::cli

@@ -10,8 +10,7 @@ namespace vrreg::cli {
 /// Adds --export, --program and --repeats.
 void add_program_options(CLI::App& command, PlanArgs& args);
 
-/// Writes the program of `plan` (visiting order) to args.program.
-void write_plan_program(const PlanArgs& args, const PlanSetup& setup,
-                        const planning::PlanResult& plan);
+/// The program of `plan` (visiting order) in the format of --export, for args.program.
+std::string plan_program(const PlanArgs& args, const planning::PlanResult& plan);
 
 }  // namespace vrreg::cli

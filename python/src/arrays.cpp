@@ -26,11 +26,20 @@ std::string shape_text(const py::array& a) {
   return text + (a.ndim() == 1 ? ",)" : ")");
 }
 
-py::array as_array(const py::handle& object, const char* what) {
+}  // namespace
+
+py::array real_array(const py::handle& object, const char* what) {
   py::array a = py::array::ensure(object);
   if (!a) bad_input(fmt::format("{}: expected a numpy array (or a sequence)", what));
+  // numpy would drop the imaginary parts in the conversion to float64, with a warning only.
+  if (a.dtype().kind() == 'c') {
+    bad_input(fmt::format("{}: complex numbers ({}), expected real numbers", what,
+                          py::str(a.dtype()).cast<std::string>()));
+  }
   return a;
 }
+
+namespace {
 
 // A C-contiguous float64 version of `a` (the same object when it already is one).
 py::array_t<double, py::array::c_style | py::array::forcecast> as_doubles(const py::array& a,
@@ -63,7 +72,7 @@ py::array read_only(py::array a) {
 }  // namespace
 
 Points3 points_from(const py::handle& object, const char* what) {
-  py::array a = as_array(object, what);
+  py::array a = real_array(object, what);
   // A single position (3,) is one point, as scipy's Rotation.apply takes it.
   if (a.ndim() == 1 && a.shape(0) == 3) a = a.attr("reshape")(1, 3).cast<py::array>();
   if (a.ndim() != 2 || a.shape(1) != 3) {
@@ -85,7 +94,7 @@ Points3 points_from(const py::handle& object, const char* what) {
 }
 
 Eigen::VectorXd vector_from(const py::handle& object, const char* what, Eigen::Index n) {
-  const py::array a = as_array(object, what);
+  const py::array a = real_array(object, what);
   if (a.ndim() != 1) {
     bad_input(
         fmt::format("{}: expected a 1-D array, got shape {}", what, shape_text(a)));
@@ -96,7 +105,7 @@ Eigen::VectorXd vector_from(const py::handle& object, const char* what, Eigen::I
 }
 
 std::vector<int> ints_from(const py::handle& object, const char* what, Eigen::Index n) {
-  const py::array a = as_array(object, what);
+  const py::array a = real_array(object, what);
   if (a.ndim() != 1) {
     bad_input(
         fmt::format("{}: expected a 1-D array of integers, got shape {}", what, shape_text(a)));
@@ -130,7 +139,7 @@ std::vector<int> ints_from(const py::handle& object, const char* what, Eigen::In
 
 Eigen::MatrixXd rows_from(const py::handle& object, const char* what, Eigen::Index n,
                           Eigen::Index n_cols) {
-  const py::array a = as_array(object, what);
+  const py::array a = real_array(object, what);
   if (a.ndim() != 2 || (n_cols >= 0 && a.shape(1) != n_cols)) {
     bad_input(fmt::format("{}: expected an (N, {}) array, got shape {}", what,
                                       n_cols >= 0 ? std::to_string(n_cols) : "n", shape_text(a)));

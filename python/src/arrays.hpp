@@ -17,6 +17,9 @@ namespace vrreg::python {
 
 namespace py = pybind11;
 
+/// `object` as a numpy array of real numbers; InputError naming `what` when it is none, or holds
+/// complex numbers.
+py::array real_array(const py::handle& object, const char* what);
 /// An (N, 3) array of positions [m] as a point set; ValueError naming `what` on another shape.
 Points3 points_from(const py::handle& array, const char* what);
 /// A 1-D array of N values; ValueError naming `what` unless it has `n` entries (n < 0: any).

@@ -6,6 +6,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "paths.hpp"
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 
@@ -101,13 +102,14 @@ void bind_io(py::module_& m) {
 
   m.def(
       "read_measurements",
-      [](const std::string& path, bool require_robot) {
+      [](const PathText& path, bool require_robot) {
         io::CsvReadOptions options;
         options.require_robot = require_robot;
-        return io::read_measurement_csv(path, options);
+        return io::read_measurement_csv(path.text, options);
       },
       py::arg("path"), py::kw_only(), py::arg("require_robot") = true,
-      "Reads a measurement CSV (docs/file-formats.md; mm or m columns, stored in metres). "
+      "Reads a measurement CSV (docs/file-formats.md; mm or m columns, stored in metres) at a str "
+      "or os.PathLike path. "
       "require_robot=False accepts sensor-only points (as `vrreg correct --points` reads). "
       "FileError (a ValueError) naming file and line on bad input, or a missing file.");
 }

@@ -6,6 +6,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "paths.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/inverse_kinematics.hpp"
@@ -25,7 +26,7 @@ kinematics::SerialChain chain_named(const std::string& robot, const py::object& 
 
 Eigen::Isometry3d pose_from(const py::object& pose) {
   const py::array_t<double, py::array::forcecast> a =
-      py::array_t<double, py::array::forcecast>::ensure(pose);
+      py::array_t<double, py::array::forcecast>::ensure(real_array(pose, "pose"));
   if (!a || a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4) {
     throw InputError("pose: expected a (4, 4) homogeneous matrix (translation in metres)");
   }
@@ -41,8 +42,8 @@ Eigen::Isometry3d pose_from(const py::object& pose) {
 void bind_kinematics(py::module_& m) {
   m.def(
       "fk",
-      [](const std::string& robot, const py::object& q, const py::object& tool) {
-        const kinematics::SerialChain chain = chain_named(robot, tool);
+      [](const PathText& robot, const py::object& q, const py::object& tool) {
+        const kinematics::SerialChain chain = chain_named(robot.text, tool);
         const Eigen::VectorXd q_rad = vector_from(q, "q", chain.n_joints());
         return matrix_copy(kinematics::forward_kinematics(chain, q_rad).matrix());
       },
@@ -53,9 +54,9 @@ void bind_kinematics(py::module_& m) {
 
   m.def(
       "ik",
-      [](const std::string& robot, const py::object& pose, std::optional<double> psi,
+      [](const PathText& robot, const py::object& pose, std::optional<double> psi,
          const py::object& tool, bool joint_limits) {
-        const kinematics::SerialChain chain = chain_named(robot, tool);
+        const kinematics::SerialChain chain = chain_named(robot.text, tool);
         const Eigen::Isometry3d t = pose_from(pose);
         if (!psi && chain.family() == kinematics::ChainFamily::kLwr) psi = 0.0;
         kinematics::IkOptions options;

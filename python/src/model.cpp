@@ -8,6 +8,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "paths.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/model_json.hpp"
@@ -118,18 +119,19 @@ void bind_model(py::module_& m) {
           "(N, 3) RRBC corrections epsilon_j (Eq. 6), sensor frame [m]")
       .def(
           "save",
-          [](const RegistrationModel& s, const std::string& path) {
-            io::write_model_json(path, s);
+          [](const RegistrationModel& s, const PathText& path) {
+            io::write_model_json(path.text, s);
           },
           py::arg("path"),
           "Writes the model file of `vrreg register -o` (JSON, whole or not at all).")
       .def(
           "to_json", [](const RegistrationModel& s) { return io::format_model_json(s); },
           "The model file's text (JSON).")
-      .def("as_matrix",
-           [](const RegistrationModel& s) { return matrix_copy(homogeneous(s.T_robot_sensor)); },
-           "T_robot_sensor as a (4, 4) homogeneous matrix [s R, tau; 0, 1] (tau in metres), as "
-           "scipy's Rotation.as_matrix and Open3D's transform take it.")
+      .def(
+          "as_matrix",
+          [](const RegistrationModel& s) { return matrix_copy(homogeneous(s.T_robot_sensor)); },
+          "T_robot_sensor as a (4, 4) homogeneous matrix [s R, tau; 0, 1] (tau in metres), as "
+          "scipy's Rotation.as_matrix and Open3D's transform take it.")
       .def("apply", &apply_to, py::arg("points"),
            "s R X + tau (Eq. 2) of (N, 3) sensor-frame positions [m], or of one (3,) position: "
            "the registration alone. vrreg.correct(model, points) adds the RRBC correction.")
@@ -148,9 +150,11 @@ void bind_model(py::module_& m) {
           [](const RegistrationModel& s, const py::dict&) { return RegistrationModel(s); },
           py::arg("memo"));
 
-  m.def("load_model", &io::read_model_json, py::arg("path"),
-        "Reads a model file written by Model.save or `vrreg register -o`; FileError (a ValueError) "
-        "on a missing, truncated or invalid file.");
+  m.def(
+      "load_model", [](const PathText& path) { return io::read_model_json(path.text); },
+      py::arg("path"),
+      "Reads a model file written by Model.save or `vrreg register -o`; FileError (a ValueError) "
+      "on a missing, truncated or invalid file.");
   m.def(
       "model_from_json",
       [](const std::string& text) { return io::parse_model_json(text, "<string>"); },

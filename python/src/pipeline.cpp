@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "paths.hpp"
 #include "points.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
@@ -25,9 +26,9 @@ InterpolationChoice interpolation_choice(const std::optional<std::string>& metho
 
 /// The arm a joint-space model needs: a built-in name ('ur5', 'lwr4', ...) or a robot file (its
 /// tool the marker), as `--robot` on the command line; none when not given.
-std::optional<kinematics::SerialChain> arm_of(const std::optional<std::string>& arm) {
+std::optional<kinematics::SerialChain> arm_of(const std::optional<PathText>& arm) {
   if (!arm) return std::nullopt;
-  return io::load_robot(*arm);
+  return io::load_robot(arm->text);
 }
 
 struct RegisterKwargs {
@@ -41,7 +42,7 @@ struct RegisterKwargs {
   std::string joint_norm = "l2";
   std::optional<std::uint64_t> seed;
   bool rigid_body = true;
-  std::optional<std::string> arm;
+  std::optional<PathText> arm;
 
   [[nodiscard]] RegisterOptions options() const {
     RegisterOptions o;
@@ -132,7 +133,7 @@ void bind_pipeline(py::module_& m) {
          const py::object& n_readings, const py::object& sensor_sq_dev, std::optional<int> config,
          bool scale, bool robust, std::optional<double> sigma_rep, const std::string& interpolation,
          std::optional<double> cube_edge, int strategy, const std::string& joint_norm,
-         std::optional<std::uint64_t> seed, bool rigid_body, std::optional<std::string> arm) {
+         std::optional<std::uint64_t> seed, bool rigid_body, std::optional<PathText> arm) {
         const RegisterOptions options =
             RegisterKwargs{config,    scale,    robust,     sigma_rep,  interpolation, cube_edge,
                            strategy,  joint_norm, seed,     rigid_body, arm}
@@ -160,7 +161,7 @@ void bind_pipeline(py::module_& m) {
          const py::object& names, const py::object& configs, const py::object& joints,
          std::optional<int> config, std::optional<std::string> interpolation,
          std::optional<double> cube_edge, std::optional<int> strategy,
-         std::optional<std::string> joint_norm, std::optional<std::string> arm, bool refit,
+         std::optional<std::string> joint_norm, std::optional<PathText> arm, bool refit,
          bool exact, bool extrapolate) {
         EvaluateOptions options;
         options.config = config;
@@ -194,7 +195,7 @@ void bind_pipeline(py::module_& m) {
       [](const RegistrationModel& model, const py::object& sensor, const py::object& robot,
          const py::object& names, const py::object& configs, const py::object& joints,
          std::optional<int> config, std::optional<std::string> interpolation,
-         std::optional<double> cube_edge, std::optional<std::string> arm, bool refit, bool exact,
+         std::optional<double> cube_edge, std::optional<PathText> arm, bool refit, bool exact,
          bool extrapolate) {
         CorrectOptions options;
         options.config = config;

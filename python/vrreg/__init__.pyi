@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 # Type stubs of the vrreg package (the compiled _vrreg re-exported). Lengths in metres, angles in
 # radians; positions are (N, 3) float64 arrays (any strides; float32 converted).
+import os
 from typing import Any, ClassVar, Optional, Sequence
 
 import numpy as np
@@ -8,6 +9,7 @@ import numpy.typing as npt
 
 _ArrayLike = npt.ArrayLike
 _Array = npt.NDArray[np.float64]
+_Path = str | os.PathLike[str]
 
 RHO_THRESHOLD: float
 __version__: str
@@ -71,7 +73,7 @@ class Model:
     def fiducials_sensor(self) -> _Array: ...
     @property
     def corrections(self) -> _Array: ...
-    def save(self, path: str) -> None: ...
+    def save(self, path: _Path) -> None: ...
     def to_json(self) -> str: ...
     def as_matrix(self) -> _Array:
         """T_robot_sensor (4, 4): [s R, tau; 0, 1], tau in metres."""
@@ -257,25 +259,25 @@ def register(sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = No
              sigma_rep: Optional[float] = None, interpolation: str = "linear",
              cube_edge: Optional[float] = None, strategy: int = 0, joint_norm: str = "l2",
              seed: Optional[int] = None, rigid_body: bool = True,
-             arm: Optional[str] = None) -> RegisterResult:
+             arm: Optional[_Path] = None) -> RegisterResult:
     """Registers fiducials (Eq. 2), sigma_L (Eq. 1), noise (Eq. 9), corrections (Eq. 6). Metres."""
 def evaluate(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = None,
              *, names: Optional[Sequence[str]] = None, configs: Optional[_ArrayLike] = None,
              joints: Optional[_ArrayLike] = None, config: Optional[int] = None,
              interpolation: Optional[str] = None, cube_edge: Optional[float] = None,
              strategy: Optional[int] = None, joint_norm: Optional[str] = None,
-             arm: Optional[str] = None, refit: bool = False,
+             arm: Optional[_Path] = None, refit: bool = False,
              exact: bool = False, extrapolate: bool = False) -> EvaluateResult:
     """TRE and RMS_T uncorrected and corrected (Eq. 3, 4, 7, 8), gamma, N_bad. Metres."""
 def correct(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = None,
             *, names: Optional[Sequence[str]] = None, configs: Optional[_ArrayLike] = None,
             joints: Optional[_ArrayLike] = None, config: Optional[int] = None,
             interpolation: Optional[str] = None,
-            cube_edge: Optional[float] = None, arm: Optional[str] = None, refit: bool = False,
+            cube_edge: Optional[float] = None, arm: Optional[_Path] = None, refit: bool = False,
             exact: bool = False, extrapolate: bool = False) -> CorrectResult:
     """RRBC-corrected robot-frame positions to command (Eq. 7, 8). Metres."""
-def read_measurements(path: str, *, require_robot: bool = True) -> Measurements: ...
-def load_model(path: str) -> Model: ...
+def read_measurements(path: _Path, *, require_robot: bool = True) -> Measurements: ...
+def load_model(path: _Path) -> Model: ...
 def model_from_json(text: str) -> Model: ...
 def rigid_body_statistics(sensor: _ArrayLike, robot: _ArrayLike) -> dict[str, float]: ...
 def sigma_noise(sigma_opt: float, sigma_rep: float) -> float: ...
@@ -284,9 +286,9 @@ def improvement(unc_tre: _ArrayLike, cor_tre: _ArrayLike) -> dict[str, Any]: ...
 def estimate_marker_offset(robot: str, joints: _ArrayLike, sensor: _ArrayLike, *,
                            min_orientation_spread: float = 0.02) -> dict[str, Any]:
     """T_robot_sensor and the marker offset in the flange frame (m), with uncertainties."""
-def fk(robot: str, q: _ArrayLike, *, tool: Optional[_ArrayLike] = None) -> _Array:
+def fk(robot: _Path, q: _ArrayLike, *, tool: Optional[_ArrayLike] = None) -> _Array:
     """T_base_tcp (4, 4), translation in metres; robot: built-in name or robot file (DH, URDF)."""
-def ik(robot: str, pose: _ArrayLike, *, psi: Optional[float] = None,
+def ik(robot: _Path, pose: _ArrayLike, *, psi: Optional[float] = None,
        tool: Optional[_ArrayLike] = None, joint_limits: bool = True) -> dict[str, Any]:
     """Every IK solution: q (S, n) [rad], configs, config_indices, singular, status."""
 def robots() -> list[str]: ...

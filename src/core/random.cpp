@@ -1,11 +1,20 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/core/random.hpp"
 
-#include <cmath>
-
 #include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+
+#include "vrreg/core/check.hpp"
 
 namespace vrreg {
+
+void check_seed_run(std::uint64_t first, std::uint64_t count, const std::string& what) {
+  constexpr std::uint64_t kLast = std::numeric_limits<std::uint64_t>::max();
+  VRREG_THROW_UNLESS(count == 0 || first <= kLast - (count - 1),
+                     what << ": " << count << " seeds from " << first
+                          << " pass 2^64 - 1 = " << kLast << " (the largest seed)");
+}
 
 double Random::uniform() {
   return static_cast<double>(engine_() >> 11) * 0x1.0p-53;

@@ -96,6 +96,7 @@ RobustStudyCell run_cell(const MeasurementSet& clean, std::uint64_t seed, Robust
 
 void RobustStudyOptions::validate() const {
   VRREG_THROW_UNLESS(seeds >= 1, "robust study: need at least 1 seed, got " << seeds);
+  check_seed_run(first_seed, static_cast<std::uint64_t>(seeds), "robust study");
   VRREG_THROW_UNLESS(!sigma_rep_m || (std::isfinite(*sigma_rep_m) && *sigma_rep_m >= 0.0),
                      "robust study: sigma_rep must be finite and >= 0");
   outliers.validate();

@@ -10,7 +10,10 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "file_kind.hpp"
 #include "temporary_files.hpp"
@@ -79,6 +82,55 @@ std::string temporary_basename() {
   return name;
 }
 
+// An output renamed into place that can be taken back until the command's other outputs are in
+// place too: the file it replaced lives on as a hard link beside it, removed when this goes.
+class Replacement {
+ public:
+  Replacement(fs::path target, bool existed) : target_(std::move(target)), existed_(existed) {
+    if (!existed_) return;
+    const fs::path dir = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      std::string name = (dir / temporary_basename()).string();
+      const int slot = detail::remember_temporary(name);
+      if (::link(target_.c_str(), name.c_str()) == 0) {
+        backup_ = std::move(name);
+        slot_ = slot;
+        return;
+      }
+      const int error = errno;
+      detail::forget_temporary(slot);
+      if (error != EEXIST) return;  // no hard links here: this one output cannot be put back
+    }
+  }
+  Replacement(Replacement&& other) noexcept
+      : target_(std::move(other.target_)),
+        backup_(std::exchange(other.backup_, {})),
+        existed_(other.existed_),
+        slot_(std::exchange(other.slot_, -1)) {}
+  Replacement(const Replacement&) = delete;
+  Replacement& operator=(const Replacement&) = delete;
+  Replacement& operator=(Replacement&&) = delete;
+  ~Replacement() {
+    if (!backup_.empty()) ::unlink(backup_.c_str());
+    detail::forget_temporary(slot_);
+  }
+
+  // What was at the target before comes back: the replaced file, or nothing.
+  void undo() {
+    if (!backup_.empty()) {
+      if (::rename(backup_.c_str(), target_.c_str()) == 0) backup_.clear();
+    } else if (!existed_) {
+      ::unlink(target_.c_str());
+    }
+  }
+
+ private:
+  fs::path target_;
+  std::string backup_;
+  bool existed_;
+  int slot_ = -1;
+};
+
 // Owns the temporary file until it is renamed: closes and removes it on every error path, and
 // lists it for the signal handler (remove_temporary_files_on_signal) meanwhile.
 class TemporaryFile {
@@ -140,6 +192,13 @@ class TemporaryFile {
     if (::close(fd) != 0) fail("cannot close");
   }
 
+  // commit(), keeping what it replaces so that it can be undone.
+  Replacement commit_undoably(bool existed) {
+    Replacement replacement(target_, existed);
+    commit();
+    return replacement;
+  }
+
   void commit() {
     // A signal between the rename and forget_temporary() unlinks a name that is gone: harmless.
     if (::rename(name_.c_str(), target_.c_str()) != 0) fail("cannot rename the temporary file");
@@ -183,6 +242,32 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   TemporaryFile file(path, target, existing);
   file.write_all(content);
   file.commit();
+}
+
+void write_files_atomically(const std::vector<OutputFile>& files) {
+  struct Pending {
+    std::unique_ptr<TemporaryFile> file;
+    bool existed;
+  };
+  std::vector<Pending> pending;
+  pending.reserve(files.size());
+  for (const OutputFile& f : files) {
+    if (f.path.empty()) throw FileError("(empty path)", 0, "no output file name");
+    const fs::path target = follow_symlinks(f.path);
+    const std::optional<struct stat> existing = replaceable_target(f.path, target);
+    pending.push_back(
+        {std::make_unique<TemporaryFile>(f.path, target, existing), existing.has_value()});
+    pending.back().file->write_all(f.content);
+  }
+  // Every output is on disk under its temporary name: only the renames remain.
+  std::vector<Replacement> done;
+  done.reserve(pending.size());
+  try {
+    for (Pending& p : pending) done.push_back(p.file->commit_undoably(p.existed));
+  } catch (...) {
+    for (auto it = done.rbegin(); it != done.rend(); ++it) it->undo();
+    throw;
+  }
 }
 
 void write_file_atomically_in_pieces(const std::string& path,

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "json_fields.hpp"
 #include "corrector_json.hpp"
+#include "json_fields.hpp"
 #include "model_chain_json.hpp"
 #include "model_marker_offset_json.hpp"
 #include "model_units.hpp"
@@ -165,6 +165,27 @@ SigmaLSampling read_sampling(const json& doc, const detail::JsonFields& f, const
   return out;
 }
 
+// A joint-space model needs the robot and, on every fiducial, as many joint angles as the robot
+// has. Checked here, so that a damaged model file is named, not the targets it is later evaluated
+// on. (Other models do not use joints, and may hold them on some fiducials only.)
+void check_joint_model(const RegistrationModel& model, const detail::JsonFields& f) {
+  if (model.interpolation.method != InterpolationMethod::kJoint) return;
+  if (!model.robot) {
+    f.fail("robot",
+           "missing key: a joint-space model (interpolation 'joint') needs the robot its "
+           "fiducials' joint angles are for");
+  }
+  const auto n_joints = static_cast<std::size_t>(model.robot->n_joints());
+  for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
+    const std::size_t n = model.fiducials[j].q_rad.size();
+    if (n == n_joints) continue;
+    f.fail("fiducials[" + std::to_string(j) + "].q_rad",
+           (n == 0 ? std::string("missing key") : std::to_string(n) + " joint angles") +
+               ": a joint-space model needs the joint angles of every fiducial, " +
+               std::to_string(n_joints) + " for robot '" + model.robot->name() + "'");
+  }
+}
+
 }  // namespace
 
 RegistrationModel parse_model_json(const std::string& text, const std::string& source) {
@@ -218,6 +239,7 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
         detail::read_marker_offset(doc.at("marker_offset"), "marker_offset", f, u);
   }
   if (doc.contains("robot")) model.robot = detail::read_chain(doc.at("robot"), "robot", f);
+  check_joint_model(model, f);
   if (doc.contains("corrector")) {
     const SavedCorrector saved = detail::read_corrector(doc.at("corrector"), "corrector", f);
     try {

@@ -83,6 +83,16 @@ std::string format_model_json(const RegistrationModel& model) {
       model.corrections_sensor_m.cols() == static_cast<Eigen::Index>(model.fiducials.size()),
       "model: " << model.corrections_sensor_m.cols() << " corrections for "
                 << model.fiducials.size() << " fiducials");
+  // What the reader refuses: a joint-space model without its robot or a fiducial's joints.
+  if (model.interpolation.method == InterpolationMethod::kJoint) {
+    VRREG_THROW_UNLESS(model.robot, "model: a joint-space model needs its robot");
+    for (const Location& f : model.fiducials) {
+      VRREG_THROW_UNLESS(f.q_rad.size() == static_cast<std::size_t>(model.robot->n_joints()),
+                         "model: fiducial '" << f.point << "' has " << f.q_rad.size()
+                                             << " joint angles, robot '" << model.robot->name()
+                                             << "' " << model.robot->n_joints());
+    }
+  }
   const SimilarityTransform& T = model.T_robot_sensor;
   ordered_json out = ordered_json::object();
   out["format"] = "vrreg-model";

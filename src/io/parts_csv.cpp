@@ -59,8 +59,11 @@ std::vector<PartRecord> parse_parts_csv(std::istream& in, const std::string& sou
       continue;
     }
     detail::check_field_count(fields, *columns, source_name, at);
-    std::string label = detail::parse_point_label(fields[static_cast<std::size_t>(columns->point)],
-                                                  source_name, at);
+    // Part points become plan labels: refused here, by line, not when the plan is written.
+    std::string label =
+        detail::plan_label(detail::parse_point_label(
+                               fields[static_cast<std::size_t>(columns->point)], source_name, at),
+                           "point", source_name, at);
     const std::array<double, 3> xyz = detail::parse_robot_m(fields, *columns, source_name, at);
     if (!is_part_row(fields, *columns, source_name, at)) {
       ++skipped;

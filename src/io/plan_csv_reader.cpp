@@ -27,25 +27,13 @@ std::string_view field(const std::vector<std::string_view>& fields, int column) 
   return fields[static_cast<std::size_t>(column)];
 }
 
-// A label the plan writer can write back (plan_csv.hpp): no quote and no leading '#' (a comma,
-// newline or surrounding space cannot survive the split and trim).
-std::string plan_label(std::string_view text, const char* what, const std::string& source,
-                       std::size_t line) {
-  if (text.find('"') != std::string_view::npos || (!text.empty() && text.front() == '#')) {
-    throw FileError(source, line,
-                    std::string(what) + " label '" + detail::printable(text) +
-                        "' has a quote or a leading '#' (plan labels cannot)");
-  }
-  return std::string(text);
-}
-
 PlanRow parse_row(const std::vector<std::string_view>& fields, const detail::PointColumns& cols,
                   const std::string& source, std::size_t line) {
   detail::check_field_count(fields, cols, source, line);
   PlanRow row;
   row.line = line;
-  row.point = plan_label(detail::parse_point_label(field(fields, cols.point), source, line),
-                         "point", source, line);
+  row.point = detail::plan_label(detail::parse_point_label(field(fields, cols.point), source, line),
+                                 "point", source, line);
   const std::string role = detail::to_lower(field(fields, cols.role));
   if (role != "fiducial" && role != "target") {
     throw FileError(source, line,
@@ -54,7 +42,7 @@ PlanRow parse_row(const std::vector<std::string_view>& fields, const detail::Poi
   }
   row.role = role == "target" ? Role::kTarget : Role::kFiducial;
   if (cols.part != detail::PointColumns::kAbsent) {
-    row.part = plan_label(field(fields, cols.part), "part", source, line);
+    row.part = detail::plan_label(field(fields, cols.part), "part", source, line);
   }
   const std::array<double, 3> xyz = detail::parse_robot_m(fields, cols, source, line);
   row.robot_m = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);

@@ -152,6 +152,16 @@ std::string parse_point_label(std::string_view field, const std::string& source,
   return std::string(field);
 }
 
+std::string plan_label(std::string_view text, const char* what, const std::string& source,
+                       std::size_t line) {
+  if (text.find('"') != std::string_view::npos || (!text.empty() && text.front() == '#')) {
+    throw FileError(source, line,
+                    std::string(what) + " label '" + printable(text) +
+                        "' has a quote or a leading '#' (plan labels cannot)");
+  }
+  return std::string(text);
+}
+
 bool all_fields_empty(const std::vector<std::string_view>& fields) {
   for (const std::string_view f : fields) {
     if (!f.empty()) return false;

@@ -53,6 +53,12 @@ void check_field_count(const std::vector<std::string_view>& fields, const PointC
 /// A point label from `field`: not empty, not quoted; throws FileError otherwise.
 std::string parse_point_label(std::string_view field, const std::string& source, std::size_t line);
 
+/// `text` as a plan file's `what` label ("point", "part"): one the plan writer can write back
+/// (plan_csv.hpp), so no quote and no leading '#' (a comma, newline or surrounding space cannot
+/// survive the split and trim); throws FileError otherwise.
+std::string plan_label(std::string_view text, const char* what, const std::string& source,
+                       std::size_t line);
+
 /// True when every field is empty (a spreadsheet's blank row).
 bool all_fields_empty(const std::vector<std::string_view>& fields);
 

@@ -14,6 +14,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "length_text.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
@@ -60,8 +61,6 @@ bool solve_pm(const Eigen::Matrix3d& r, double tolerance, double free_c, double&
   return singular;
 }
 
-std::string mm(double m) { return format_general(units::m_to_mm(m), 6) + " mm"; }
-
 }  // namespace
 
 LwrGeometry lwr_geometry(const SerialChain& chain, const char* what) {
@@ -91,7 +90,10 @@ LwrPoseFrame lwr_pose_frame(const LwrGeometry& g, const Eigen::Matrix3d& r,
   const double reach_min = std::abs(std::abs(g.d_se) - std::abs(g.d_ew));
   if (length > reach_max + reach_tolerance_m || length < reach_min - reach_tolerance_m ||
       length == 0.0) {
-    f.message = "the wrist centre is " + mm(length) + " from the shoulder, outside the reach [" +
+    // The squares in norm() overflow for a far target; hypot does not.
+    const double distance =
+        std::isfinite(length) ? length : std::hypot(x_sw.x(), x_sw.y(), x_sw.z());
+    f.message = "the wrist centre is " + mm(distance) + " from the shoulder, outside the reach [" +
                 mm(reach_min) + ", " + mm(reach_max) + "]";
     return f;
   }

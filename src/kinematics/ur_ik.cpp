@@ -15,6 +15,7 @@
 #include <optional>
 #include <sstream>
 
+#include "length_text.hpp"
 #include "limits_fit.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/format.hpp"
@@ -59,7 +60,7 @@ struct Branch {
 // frame 1 (y1 up): px * (-a2 a3 sin q3) > 0; px = 0 counts as positive (a measure-zero tie).
 bool elbow_up(double px, double cross) { return (px >= 0.0 ? cross : -cross) > 0.0; }
 
-std::string mm(double m) { return format_general(units::m_to_mm(m), 6) + " mm"; }
+using detail::mm;
 
 // Below this |sin q5| a refusal says that the orientation's rounding may be what put the wrist
 // out of reach (q6 = atan2 of two numbers of this size).
@@ -139,6 +140,17 @@ IkResult ur_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d
 
   // q1: the wrist centre lies at distance d4 from the vertical plane of the upper arm.
   const Eigen::Vector3d o5 = p - g.d6 * z6;
+  // No configuration puts the wrist centre farther from the shoulder than the planar arm's reach
+  // beside the d4 offset, plus d5. Refused here, before the squares below overflow for a far
+  // target and turn into NaN joints.
+  const double reach_bound = std::hypot(std::abs(g.a2) + std::abs(g.a3), g.d4) + std::abs(g.d5);
+  const double from_shoulder = std::hypot(o5.x(), o5.y(), o5.z() - g.d1);
+  if (!(from_shoulder <= reach_bound + options.reach_tolerance_m)) {
+    result.message = "the wrist centre is " + mm(from_shoulder) +
+                     " from the shoulder, beyond the arm's reach (at most " + mm(reach_bound) +
+                     " in any configuration)";
+    return result;
+  }
   const double r2 = o5.x() * o5.x() + o5.y() * o5.y();
   const double radius = std::sqrt(r2);
   if (radius < std::abs(g.d4) - options.reach_tolerance_m) {

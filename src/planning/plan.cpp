@@ -60,13 +60,15 @@ int node_column(const Eigen::Vector3i& index, int n) {
 }
 
 // IK for one part point and its cube; records unreachable locations.
-CubeJoints solve_cube(const kinematics::SerialChain& chain, const PartPoint& part,
+CubeJoints solve_cube(const kinematics::SerialChain& chain, const PartPoint& part, int index,
                       const PlanOptions& options, const CubeGeometry& cube, PartPlan& plan,
                       std::vector<UnreachableLocation>& unreachable) {
   const JointChoice at_part = part_joints(chain, part.robot_m, options.arm);
   if (!at_part.ok()) {
-    unreachable.push_back({part.name, std::string(kinematics::to_string(at_part.status)) + ": " +
-                                          at_part.message + " (its fiducials were not tried)"});
+    unreachable.push_back({part.name,
+                           std::string(kinematics::to_string(at_part.status)) + ": " +
+                               at_part.message + " (its fiducials were not tried)",
+                           index});
     return {};
   }
   plan.reachable = true;
@@ -81,7 +83,7 @@ CubeJoints solve_cube(const kinematics::SerialChain& chain, const PartPoint& par
       const auto k = static_cast<int>(c);
       unreachable.push_back(
           {fiducial_label(part.name, {k % n, (k / n) % n, k / (n * n)}),
-           std::string(kinematics::to_string(choice.status)) + ": " + choice.message});
+           std::string(kinematics::to_string(choice.status)) + ": " + choice.message, index});
       continue;
     }
     joints[static_cast<std::size_t>(c)] = choice;
@@ -160,7 +162,8 @@ PlanResult make_plan(const kinematics::SerialChain& chain, const std::vector<Par
     plan.n_fiducials = cube.n_nodes();
     plan.d_min_m = cube.d_min_m();
     plan.d_max_m = cube.d_max_m();
-    joints[i] = solve_cube(chain, parts[i], options, cube, plan, result.unreachable);
+    joints[i] =
+        solve_cube(chain, parts[i], static_cast<int>(i), options, cube, plan, result.unreachable);
   }
   if (!result.unreachable.empty()) {
     result.status = PlanStatus::kUnreachable;

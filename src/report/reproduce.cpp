@@ -4,6 +4,7 @@
 #include "reproduce_parts.hpp"
 #include "values.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/file_error.hpp"
 #include "vrreg/io/json_text.hpp"
 #include "vrreg/report/reproduce_report.hpp"
 
@@ -32,9 +33,10 @@ ReportSection plan_section(const io::PlanFile& plan, const std::string& plan_nam
           {detail::plan_layout_figure(plan, plan_name)}};
 }
 
-ReportPage reproduce_report_page(const nlohmann::json& doc, const std::string& source,
-                                 const std::optional<io::PlanFile>& plan,
-                                 const std::string& plan_name) {
+namespace {
+
+ReportPage page_of(const nlohmann::json& doc, const std::string& source,
+                   const std::optional<io::PlanFile>& plan, const std::string& plan_name) {
   ReportPage page;
   page.title = "vrreg — the paper's experiments, reproduced";
   page.subtitle =
@@ -91,6 +93,20 @@ ReportPage reproduce_report_page(const nlohmann::json& doc, const std::string& s
                 "The paper's numbers (grey rows, orange diamonds, hatched bars) are the project's "
                 "copy of Tables 1-2 and section 5.1."};
   return page;
+}
+
+}  // namespace
+
+ReportPage reproduce_report_page(const nlohmann::json& doc, const std::string& source,
+                                 const std::optional<io::PlanFile>& plan,
+                                 const std::string& plan_name) {
+  try {
+    return page_of(doc, source, plan, plan_name);
+  } catch (const FileError&) {
+    throw;  // the plan file's, named already
+  } catch (const InputError& e) {
+    throw FileError(source, 0, e.what());  // a key of the wrong type, named by its path
+  }
 }
 
 }  // namespace vrreg::report

@@ -193,13 +193,16 @@ TEST(ModelJson, LegacyAutoReadsAsLinearAndFieldModelsRoundTrip) {
   EXPECT_EQ(parse_model_json(as_version_1(doc).dump(), "old.json").interpolation.method,
             InterpolationMethod::kLinear);
   for (const auto method : {InterpolationMethod::kTrilinear, InterpolationMethod::kKriging,
-                            InterpolationMethod::kRbf, InterpolationMethod::kJoint}) {
+                            InterpolationMethod::kRbf}) {
     m.interpolation.method = method;
     EXPECT_EQ(parse_model_json(format_model_json(m), "m.json").interpolation.method, method);
   }
   // The joint-space model's robot, tool (the marker) included, is kept exactly.
+  m.interpolation.method = InterpolationMethod::kJoint;
   m.robot = kinematics::ur5().with_tool(Eigen::Isometry3d(Eigen::Translation3d(0.01, -0.02, 0.03)));
+  for (Location& f : m.fiducials) f.q_rad = {0.1, -0.2, 0.3, -0.4, 0.5, -0.6};
   const RegistrationModel r = parse_model_json(format_model_json(m), "m.json");
+  EXPECT_EQ(r.interpolation.method, InterpolationMethod::kJoint);
   ASSERT_TRUE(r.robot);
   EXPECT_EQ(r.robot->name(), m.robot->name());
   EXPECT_EQ(r.robot->T_flange_tcp().matrix(), m.robot->T_flange_tcp().matrix());
@@ -229,6 +232,15 @@ TEST(ModelJson, FormatRejectsModelsThatCannotBeReadBack) {
   EXPECT_THROW((void)format_model_json(m), InputError);
   m = random_model(rng, 4);
   m.fiducials[1].point = "bad\xff";
+  EXPECT_THROW((void)format_model_json(m), InputError);
+  // A joint-space model without its robot, or without every fiducial's joints.
+  m = random_model(rng, 4);
+  m.interpolation.method = InterpolationMethod::kJoint;
+  EXPECT_THROW((void)format_model_json(m), InputError);
+  m.robot = kinematics::ur5();
+  for (Location& f : m.fiducials) f.q_rad.assign(6, 0.25);
+  EXPECT_NO_THROW((void)format_model_json(m));
+  m.fiducials[2].q_rad.pop_back();
   EXPECT_THROW((void)format_model_json(m), InputError);
 }
 

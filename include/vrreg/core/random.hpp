@@ -2,10 +2,10 @@
 #pragma once
 // Seeded random numbers that give the same bytes on every platform: std::normal_distribution is
 // implementation-defined, so the Gaussian is drawn here from the raw 64-bit engine.
+#include <Eigen/Core>
 #include <cstdint>
 #include <random>
-
-#include <Eigen/Core>
+#include <string>
 
 namespace vrreg {
 
@@ -38,5 +38,9 @@ class Random {
   bool has_spare_ = false;
   double spare_ = 0.0;
 };
+
+/// Throws InputError naming `what` unless the `count` seeds first, first + 1, ... all fit in 64
+/// bits: a run of seeds past 2^64 - 1 would wrap to 0 and repeat seeds (or never end).
+void check_seed_run(std::uint64_t first, std::uint64_t count, const std::string& what);
 
 }  // namespace vrreg

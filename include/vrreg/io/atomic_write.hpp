@@ -4,6 +4,7 @@
 // regular file: docs/file-formats.md, "How outputs are written".
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace vrreg::io {
 
@@ -13,6 +14,18 @@ namespace vrreg::io {
 /// a replaced file keeps its permission bits (and owner where allowed); a device, FIFO, socket,
 /// directory or read-only file at `path` is refused, not replaced.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+/// One output of a command: where it goes and what it holds.
+struct OutputFile {
+  std::string path;
+  std::string content;
+};
+
+/// The outputs of one command, all or none: every file is written to its temporary file and
+/// flushed first, then each is renamed over its path; a failure removes the temporary files, and
+/// a rename that fails undoes the renames before it (a replaced file comes back). Throws what
+/// write_file_atomically throws, for the output that failed.
+void write_files_atomically(const std::vector<OutputFile>& files);
 
 /// write_file_atomically with the content made piece by piece, so that a large output never sits in
 /// memory whole: `next_piece(piece)` appends the next piece to the empty `piece` and returns false

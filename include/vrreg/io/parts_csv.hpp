@@ -12,8 +12,9 @@
 // (`fiducial` rows are skipped), and its sensor_*, config, repeat and q* columns are ignored; rows
 // repeating a point label (repeat readings, configurations) must give the same position and count
 // once. `#` lines are comments; blank lines, CRLF, a UTF-8 BOM and a missing final newline are
-// fine; quoted fields, unknown columns, short or long rows, non-finite numbers, a point label used
-// at two positions, or no part point at all throw FileError naming the file and line.
+// fine; quoted fields, a label with a quote or a leading '#' (a plan file cannot hold it),
+// unknown columns, short or long rows, non-finite numbers, a point label used at two positions, or
+// no part point at all throw FileError naming the file and line.
 #include <Eigen/Core>
 #include <cstddef>
 #include <istream>

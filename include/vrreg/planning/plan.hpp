@@ -76,6 +76,7 @@ struct PartPlan {
 struct UnreachableLocation {
   std::string point;
   std::string reason;
+  int part = -1;  ///< index of its part point in the input
 };
 
 /// The plan, or which locations cannot be reached (then `locations` is empty).

@@ -22,7 +22,7 @@ inline constexpr int kReproduceVersion = 1;
 nlohmann::json parse_reproduce_json(const std::string& text, const std::string& source);
 
 /// The page for a parsed reproduce.json; `plan` (with its file name) adds Fig. 16. Throws
-/// InputError naming the key on a value of the wrong type.
+/// FileError naming `source` and the key on a value of the wrong type.
 ReportPage reproduce_report_page(const nlohmann::json& doc, const std::string& source,
                                  const std::optional<io::PlanFile>& plan = std::nullopt,
                                  const std::string& plan_name = "");
