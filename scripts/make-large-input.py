@@ -6,7 +6,9 @@
   scripts/make-large-input.py --fiducials 0 --targets 1000000 -o /tmp/t.csv
 
 Locations lie on a cubic grid at --pitch-mm (fiducials first, then targets, each at its own grid
-node, so no two share a position); the sensor frame is the robot frame turned 30 degrees about z
+node, so no two share a position), or with --scattered uniformly at random in a 250 x 300 x 200 mm
+box with their robot coordinates written with --decimals decimals (a cell measured at free
+positions); the sensor frame is the robot frame turned 30 degrees about z
 and shifted; the robot positions carry a smooth 0.2 mm error and the sensor readings Gaussian
 noise of 0.05 mm per axis. One reading per location. Same arguments -> same bytes (seeded).
 Standard library only (Debian's /usr/bin/python3).
@@ -22,6 +24,10 @@ def main() -> int:
     parser.add_argument("--fiducials", type=int, default=100000)
     parser.add_argument("--targets", type=int, default=0)
     parser.add_argument("--pitch-mm", type=float, default=2.0)
+    parser.add_argument("--scattered", action="store_true",
+                        help="uniform random positions instead of the grid")
+    parser.add_argument("--decimals", type=int, default=3,
+                        help="decimals of the robot coordinates with --scattered")
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("-o", "--output", required=True)
     args = parser.parse_args()
@@ -33,14 +39,20 @@ def main() -> int:
     c, s = math.cos(math.radians(30.0)), math.sin(math.radians(30.0))
     shift = (250.0, 600.0, 2000.0)
     with open(args.output, "w", encoding="ascii", newline="\n") as out:
+        layout = (f"--scattered --decimals {args.decimals}" if args.scattered
+                  else f"--pitch-mm {args.pitch_mm}")
         out.write(f"# scripts/make-large-input.py --fiducials {args.fiducials} "
-                  f"--targets {args.targets} --pitch-mm {args.pitch_mm} --seed {args.seed}\n")
+                  f"--targets {args.targets} {layout} --seed {args.seed}\n")
         out.write("point,role,robot_x_mm,robot_y_mm,robot_z_mm,"
                   "sensor_x_mm,sensor_y_mm,sensor_z_mm\n")
         lines = []
         for k in range(total):
             i, j, m = k % side, (k // side) % side, k // (side * side)
             x, y, z = 300.0 + i * args.pitch_mm, -200.0 + j * args.pitch_mm, 100.0 + m * args.pitch_mm
+            if args.scattered:
+                x, y, z = (round(300.0 + 250.0 * rng.random(), args.decimals),
+                           round(-150.0 + 300.0 * rng.random(), args.decimals),
+                           round(50.0 + 200.0 * rng.random(), args.decimals))
             # true TCP = nominal + smooth error; the sensor sees the true TCP plus noise
             tx = x + 0.2 * math.sin(0.01 * y)
             ty = y + 0.2 * math.cos(0.01 * z)
@@ -49,7 +61,8 @@ def main() -> int:
             sy = -s * tx + c * ty - shift[1] + rng.gauss(0.0, 0.05)
             sz = tz + shift[2] + rng.gauss(0.0, 0.05)
             role, name = ("fiducial", f"F{k}") if k < args.fiducials else ("target", f"T{k}")
-            lines.append(f"{name},{role},{x:.4f},{y:.4f},{z:.4f},{sx:.5f},{sy:.5f},{sz:.5f}\n")
+            d = args.decimals if args.scattered else 4
+            lines.append(f"{name},{role},{x:.{d}f},{y:.{d}f},{z:.{d}f},{sx:.5f},{sy:.5f},{sz:.5f}\n")
             if len(lines) >= 65536:
                 out.writelines(lines)
                 lines.clear()

@@ -40,7 +40,8 @@ struct GridDetection {
 /// Finds the complete regular grid in fiducials_robot_m [m] (nominal robot positions): the base
 /// lattice of the per-axis coordinate levels (each within tolerance_m of an evenly spaced
 /// lattice) if every node holds a fiducial, else the finest complete sub-lattice taking every
-/// s-th level per axis (s >= 2, common to all axes, any offset; most nodes first).
+/// s-th level per axis (s >= 2, common to all axes, any offset; most nodes first). No grid when
+/// the lattice holds fewer than 1 node in 1000 (points at free positions).
 [[nodiscard]] GridDetection detect_grid(const ConstPoints3Ref& fiducials_robot_m,
                                         double tolerance_m);
 
