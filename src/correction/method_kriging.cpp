@@ -104,13 +104,8 @@ class KrigingMethod final : public FittedMethod {
     const Eigen::Vector3d nugget_var = model_.nugget_sd_m().cwiseAbs2();
     for (Eigen::Index i = begin; i < end; ++i) {
       out.sd_m(i) = std::sqrt((p.sd_m.col(i - begin).cwiseAbs2() + nugget_var).sum());
-      if (query.beyond_support || support_.contains(query.registered_robot_m.col(i))) {
-        out.stencils[static_cast<std::size_t>(i)] = Stencil{};
-      } else {
-        out.stencils[static_cast<std::size_t>(i)] = flagged_stencil(StencilStatus::kOutsideSupport);
-        out.corrections_sensor_m.col(i).setZero();
-      }
     }
+    flag_outside_support(support_, query, begin, end, out);
   }
 
   [[nodiscard]] std::optional<Eigen::VectorXd> clamp_to_support(

@@ -23,14 +23,7 @@ class RbfMethod final : public FittedMethod {
     out.corrections_sensor_m.middleCols(begin, end - begin) =
         R_robot_sensor_.transpose() *
         model_.predict(query.registered_robot_m.middleCols(begin, end - begin)).mean_m;
-    for (Eigen::Index i = begin; i < end; ++i) {
-      if (query.beyond_support || support_.contains(query.registered_robot_m.col(i))) {
-        out.stencils[static_cast<std::size_t>(i)] = Stencil{};
-      } else {
-        out.stencils[static_cast<std::size_t>(i)] = flagged_stencil(StencilStatus::kOutsideSupport);
-        out.corrections_sensor_m.col(i).setZero();
-      }
-    }
+    flag_outside_support(support_, query, begin, end, out);
   }
 
   [[nodiscard]] std::optional<Eigen::VectorXd> clamp_to_support(

@@ -85,6 +85,20 @@ struct SupportBox {
   }
 };
 
+/// Marks entries [begin, end) of `out` ok where `support` holds the point's registered position
+/// (or the query asks beyond it), else `outside support` with no correction.
+inline void flag_outside_support(const SupportBox& support, const MethodQuery& query,
+                                 Eigen::Index begin, Eigen::Index end, MethodPredictions& out) {
+  for (Eigen::Index i = begin; i < end; ++i) {
+    if (query.beyond_support || support.contains(query.registered_robot_m.col(i))) {
+      out.stencils[static_cast<std::size_t>(i)] = Stencil{};
+    } else {
+      out.stencils[static_cast<std::size_t>(i)] = flagged_stencil(StencilStatus::kOutsideSupport);
+      out.corrections_sensor_m.col(i).setZero();
+    }
+  }
+}
+
 /// The support of a field model fitted on `fiducials_robot_m`: their box and a margin of a
 /// quarter of the layout spacing. A fiducial on the layout's face registers off its nominal
 /// position by the robot's error (up to ~1 mm) and must still be corrected, while a quarter
