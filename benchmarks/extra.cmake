@@ -17,3 +17,8 @@ else()
 endif()
 # The URDF test robots (tests/data/urdf) for the numerical IK benchmarks.
 target_compile_definitions(vrreg_benchmarks PRIVATE VRREG_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+# The correction service's load generator (docs/serve.md, docs/benchmarks.md): a program, not a
+# Google Benchmark, because it drives a service in another process (vrreg serve or its Python peer).
+add_executable(vrreg_serve_load ${CMAKE_CURRENT_SOURCE_DIR}/serve_load.cpp)
+target_link_libraries(vrreg_serve_load PRIVATE Boost::headers Threads::Threads)
+vrreg_set_warnings(vrreg_serve_load)

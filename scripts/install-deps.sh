@@ -28,6 +28,7 @@ packages=(
   libyaml-cpp-dev libfmt-dev liborocos-kdl-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   liburdfdom-dev  # URDF robot files (robot_io); tests: vrreg export's URDF read back
+  libboost-dev libssl-dev  # vrreg serve: Boost.Asio and Beast (header-only), OpenSSL's SHA-256
   # benchmark-only peer (optional in CMake): OpenCV's calibrateRobotWorldHandEye beside the
   # marker-offset estimate (benchmarks/hand_eye_bench.cpp, docs/benchmarks.md)
   libopencv-calib3d-dev

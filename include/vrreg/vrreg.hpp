@@ -16,4 +16,5 @@
 #include "vrreg/pipeline/marker_offset.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/pipeline/points.hpp"
+#include "vrreg/pipeline/prepared_corrector.hpp"
 #include "vrreg/pipeline/register_fiducials.hpp"

@@ -39,6 +39,7 @@ from ._vrreg import (
     simulate,
 )
 from . import _vrreg
+from .client import Client, Correction, ServiceError
 
 
 def reproduce(seed: int = 1, *, ur5: bool = True, lwr4: bool = True) -> dict:
@@ -49,9 +50,9 @@ def reproduce(seed: int = 1, *, ur5: bool = True, lwr4: bool = True) -> dict:
 
 
 __all__ = [
-    "__version__", "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
+    "__version__", "Client", "Correction", "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
     "Plan", "RegisterResult", "RHO_THRESHOLD", "Simulation", "StencilStatus", "correct",
     "estimate_marker_offset", "evaluate", "fk", "ik", "improvement", "load_model", "model_from_json", "plan",
     "read_measurements", "register", "reproduce", "rho", "rigid_body_statistics", "robots",
-    "sigma_noise", "simulate",
+    "ServiceError", "sigma_noise", "simulate",
 ]

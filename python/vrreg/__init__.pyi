@@ -7,6 +7,8 @@ from typing import Any, ClassVar, Optional, Sequence
 import numpy as np
 import numpy.typing as npt
 
+from .client import Client as Client, Correction as Correction, ServiceError as ServiceError
+
 _ArrayLike = npt.ArrayLike
 _Array = npt.NDArray[np.float64]
 _Path = str | os.PathLike[str]

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/pipeline/correct.hpp"
 
+#include "vrreg/pipeline/prepared_corrector.hpp"
+
 #include "model_corrector.hpp"
 #include "procedure2_steps.hpp"
 #include "set_rows.hpp"
@@ -45,34 +47,27 @@ CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& 
   return out;
 }
 
-}  // namespace
 
-CorrectResult correct(const RegistrationModel& model, const MeasurementSet& points,
-                      const CorrectOptions& options) {
-  return correct_set(model, points, options);
+bool corrects_point_by_point(const RegistrationModel& model, const CorrectOptions& options) {
+  return model.procedure2.strategy != Strategy::kAlongPath &&
+         model.procedure2.strategy != Strategy::kVolumeCorners && !options.config &&
+         !model.config && !model.marker_offset;
 }
 
-CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& points,
-                      const CorrectOptions& options) {
-  const bool per_point = model.procedure2.strategy != Strategy::kAlongPath &&
-                         model.procedure2.strategy != Strategy::kVolumeCorners &&
-                         !options.config && !model.config && !model.marker_offset;
-  if (!per_point) {  // labels and joints decide which points and which fiducials: the set's way
-    CorrectResult out = correct_set(model, points.to_measurement_set(Role::kTarget, false), options);
-    if (points.names.empty()) out.names.clear();
-    return out;
-  }
-  // Every point, straight from the caller's arrays: no per-point records (10^6 points stay 10^6
-  // columns), the same numbers as the set's way.
-  model.validate();
+pipeline_detail::CorrectorRequest corrector_request(const RegistrationModel& model,
+                                                    const CorrectOptions& options) {
+  return {options.interpolation.apply(model.interpolation), model.procedure2.strategy,
+          model.procedure2.joint_norm, options.robot, options.refit, options.exact,
+          options.extrapolate};
+}
+
+// Every point, straight from the caller's arrays: no per-point records (10^6 points stay 10^6
+// columns), the same numbers as the set's way.
+CorrectResult correct_points(const Corrector& corrector, const MeasuredPoints& points,
+                             const InterpolationSettings& interpolation, bool extrapolate) {
   points.validate(false);
   CorrectResult out;
-  out.interpolation = options.interpolation.apply(model.interpolation);
-  const pipeline_detail::CorrectorRequest request{out.interpolation, model.procedure2.strategy,
-                                                  model.procedure2.joint_norm, options.robot,
-                                                  options.refit, options.exact,
-                                                  options.extrapolate};
-  const Corrector corrector = pipeline_detail::corrector_for(model, request);
+  out.interpolation = interpolation;
   if (out.interpolation.method == InterpolationMethod::kAuto) {
     out.cross_validation = corrector.cross_validation();
   }
@@ -91,11 +86,71 @@ CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& poin
   const Eigen::MatrixXd no_joints(0, 0);
   CorrectionQuery query(points.sensor_m, needs.nominal_robot ? points.robot_m : no_points,
                         needs.joints ? points.joints_rad : no_joints, sequence);
-  query.extrapolate = options.extrapolate;
+  query.extrapolate = extrapolate;
   out.correction = corrector.correct(query);
   out.names = points.names;
   for (const int config : points.configs) out.configs.emplace_back(config);
   return out;
 }
+
+// Labels and joints decide which points and which fiducials: the set's way.
+CorrectResult correct_as_set(const RegistrationModel& model, const MeasuredPoints& points,
+                             const CorrectOptions& options) {
+  CorrectResult out = correct_set(model, points.to_measurement_set(Role::kTarget, false), options);
+  if (points.names.empty()) out.names.clear();
+  return out;
+}
+
+}  // namespace
+
+CorrectResult correct(const RegistrationModel& model, const MeasurementSet& points,
+                      const CorrectOptions& options) {
+  return correct_set(model, points, options);
+}
+
+CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& points,
+                      const CorrectOptions& options) {
+  if (!corrects_point_by_point(model, options)) return correct_as_set(model, points, options);
+  model.validate();
+  const pipeline_detail::CorrectorRequest request = corrector_request(model, options);
+  return correct_points(pipeline_detail::corrector_for(model, request), points, request.settings,
+                        options.extrapolate);
+}
+
+PreparedCorrector::PreparedCorrector(std::shared_ptr<const RegistrationModel> model,
+                                     CorrectOptions options)
+    : model_(std::move(model)), options_(std::move(options)) {
+  VRREG_THROW_UNLESS(model_ != nullptr, "no model given");
+  model_->validate();
+  const pipeline_detail::CorrectorRequest request = corrector_request(*model_, options_);
+  const Corrector corrector = pipeline_detail::corrector_for(*model_, request);
+  method_ = corrector.method();
+  predicts_sd_ = corrector.sd_source() != SdSource::kNone;
+  if (corrector.needs().joints) {
+    // The fiducials' joints: every point is compared with them.
+    joints_needed_ = static_cast<int>(model_->fiducials.front().q_rad.size());
+  }
+  if (corrects_point_by_point(*model_, options_)) {
+    corrector_ = std::make_shared<const Corrector>(corrector);
+  }
+}
+
+CorrectResult PreparedCorrector::correct(const MeasuredPoints& points) const {
+  return correct(points, options_.extrapolate);
+}
+
+CorrectResult PreparedCorrector::correct(const MeasuredPoints& points, bool extrapolate) const {
+  if (!corrector_) {
+    CorrectOptions options = options_;
+    options.extrapolate = extrapolate;
+    return correct_as_set(*model_, points, options);
+  }
+  return correct_points(*corrector_, points, options_.interpolation.apply(model_->interpolation),
+                        extrapolate);
+}
+
+InterpolationMethod PreparedCorrector::method() const { return method_; }
+int PreparedCorrector::joints_needed() const { return joints_needed_; }
+bool PreparedCorrector::predicts_sd() const { return predicts_sd_; }
 
 }  // namespace vrreg

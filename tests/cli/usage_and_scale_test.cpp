@@ -27,7 +27,7 @@ TEST(UsageErrors, AreOneLineWithStatus2) {
   for (const std::string& args : std::vector<std::string>{
            "simulate ur5 A1 --seed -1 -o " + shell_quoted(dir / "s.csv"), "simulate ur5 A1 -o ''",
            "register", "register --fiducials x.csv --no-such-flag", "no-such-command",
-           "serve --help", "--version serve",
+           "no-such-service --help", "--version no-such-service",
            "evaluate --model m.json --targets t.csv --per-target ''"}) {
     const CliResult r = run_vrreg(args);
     EXPECT_EQ(r.status, 2) << args;

@@ -26,7 +26,8 @@ struct Case {
 const Case kCases[] = {
     {"measurement_csv", measurement_csv}, {"model_json", model_json}, {"robot_file", robot_file},
     {"error_model", error_model},         {"plan_csv", plan_csv},     {"parts_csv", parts_csv},
-    {"urdf", urdf}};
+    {"urdf", urdf},
+    {"serve_line", serve_line},           {"serve_http", serve_http}};
 
 std::vector<fs::path> inputs_of(const std::string& name) {
   std::vector<fs::path> out;

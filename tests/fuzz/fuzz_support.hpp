@@ -59,6 +59,8 @@ int error_model(const std::uint8_t* data, std::size_t size);
 int plan_csv(const std::uint8_t* data, std::size_t size);
 int parts_csv(const std::uint8_t* data, std::size_t size);
 int urdf(const std::uint8_t* data, std::size_t size);
+int serve_line(const std::uint8_t* data, std::size_t size);
+int serve_http(const std::uint8_t* data, std::size_t size);
 
 }  // namespace vrreg::fuzz
 

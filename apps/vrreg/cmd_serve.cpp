@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: Apache-2.0
+// vrreg serve: the correction service (docs/serve.md). Loads fitted models once and answers
+// correction requests from robot programs (line protocol) and cell software (HTTP/JSON).
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <mutex>
+
+#include "cli_support.hpp"
+#include "command_registry.hpp"
+#include "serve/service.hpp"
+#include "serve/served_model.hpp"
+#include "vrreg/core/file_error.hpp"
+#include "vrreg/io/input_file.hpp"
+
+namespace vrreg::cli {
+namespace {
+
+struct ServeArgs {
+  std::vector<std::string> models;
+  std::string listen;
+  std::string http;
+  bool allow_remote = false;
+  std::string token_file;
+  int threads = 0;
+  int max_connections = 256;
+  std::size_t max_body_bytes = 1u << 20;
+  std::size_t max_batch = 10000;
+  double idle_timeout_s = 600.0;
+  int reload_poll_ms = 1000;
+  std::string audit_log;
+  double audit_max_mb = 64.0;
+  int audit_keep = 5;
+};
+
+// The token's first line; a file keeps it out of the process list and the shell history.
+std::string read_token(const std::string& path) {
+  if (path.empty()) {
+    const char* env = std::getenv("VRREG_SERVE_TOKEN");
+    return env ? env : "";
+  }
+  std::string text = io::read_input_file(path);
+  const std::size_t end = text.find_first_of("\r\n");
+  if (end != std::string::npos) text.resize(end);
+  if (text.empty()) throw FileError(path, 1, "--token-file: the first line holds no token");
+  return text;
+}
+
+void run_serve(const ServeArgs& args) {
+  serve::ServeOptions options;
+  for (const std::string& m : args.models) options.models.push_back(serve::parse_model_source(m));
+  if (!args.listen.empty()) options.line = serve::parse_endpoint(args.listen);
+  if (!args.http.empty()) options.http = serve::parse_endpoint(args.http);
+  options.allow_remote = args.allow_remote;
+  options.token = read_token(args.token_file);
+  options.threads = args.threads;
+  options.max_connections = args.max_connections;
+  options.max_body_bytes = args.max_body_bytes;
+  options.max_batch = args.max_batch;
+  options.idle_timeout_s = args.idle_timeout_s;
+  options.reload_poll_ms = args.reload_poll_ms;
+  options.audit.path = args.audit_log;
+  options.audit.max_bytes = static_cast<std::size_t>(args.audit_max_mb * 1048576.0);
+  options.audit.keep = args.audit_keep;
+  static std::mutex log_mutex;
+  const auto log = [](const std::string& message) {
+    const std::lock_guard lock(log_mutex);
+    std::fprintf(stderr, "%s vrreg serve: %s\n", serve::utc_now().c_str(), message.c_str());
+    std::fflush(stderr);
+  };
+  serve::Service service(std::move(options), log);
+  for (const auto& m : service.models().all()) {
+    const serve::ModelIdentity& id = m->identity();
+    log("model '" + id.name + "' from " + id.path + ": " + id.method + ", " +
+        std::to_string(id.n_fiducials) + " fiducials, sha256 " + id.sha256);
+  }
+  if (service.line_port() != 0) {
+    log("line protocol on " + (args.listen.rfind(':') != std::string::npos
+                                   ? args.listen.substr(0, args.listen.rfind(':'))
+                                   : std::string("127.0.0.1")) +
+        ":" + std::to_string(service.line_port()));
+  }
+  if (service.http_port() != 0) {
+    log("HTTP on " + (args.http.rfind(':') != std::string::npos
+                          ? args.http.substr(0, args.http.rfind(':'))
+                          : std::string("127.0.0.1")) +
+        ":" + std::to_string(service.http_port()));
+  }
+  log("ready (SIGHUP reloads the models, SIGINT or SIGTERM stops)");
+  service.run_until_signalled();
+  const serve::ServiceStats s = service.stats();
+  log("stopped after " + std::to_string(s.corrections) + " corrections (" +
+      std::to_string(s.refusals) + " refused) on " + std::to_string(s.connections) +
+      " connections");
+}
+
+void add_serve_command(CLI::App& app) {
+  auto args = std::make_shared<ServeArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "serve",
+      "Answer correction requests from robot programs (line protocol) and cell software "
+      "(HTTP/JSON) with models fitted once (docs/serve.md)");
+  cmd->add_option("--model", args->models,
+                  "a model JSON written by 'vrreg register -o', as FILE (named by its stem) or "
+                  "NAME=FILE; repeat for several")
+      ->required();
+  cmd->add_option("--listen", args->listen,
+                  "line protocol address, ADDRESS:PORT (e.g. 127.0.0.1:30401; port 0: any free)");
+  cmd->add_option("--http", args->http, "HTTP/JSON address, ADDRESS:PORT");
+  cmd->add_flag("--allow-remote", args->allow_remote,
+                "listen on addresses other than loopback (needs a token)");
+  add_input_option(*cmd, "--token-file", args->token_file,
+                   "file whose first line is the shared token clients must send (default: "
+                   "$VRREG_SERVE_TOKEN; none on loopback)");
+  cmd->add_option("--threads", args->threads, "threads answering (default: the cores)")
+      ->check(CLI::Range(0, 256));
+  cmd->add_option("--max-connections", args->max_connections,
+                  "open connections at most; more are refused (default 256)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--max-body-bytes", args->max_body_bytes, "HTTP body size at most (default 1 MiB)");
+  cmd->add_option("--max-batch", args->max_batch, "points in one HTTP batch at most (default 10000)");
+  cmd->add_option("--idle-timeout-s", args->idle_timeout_s,
+                  "close a connection silent this long (default 600)");
+  cmd->add_option("--reload-poll-ms", args->reload_poll_ms,
+                  "check the model files for changes this often; 0: on SIGHUP only (default 1000)");
+  cmd->add_option("--audit-log", args->audit_log,
+                  "append one JSON line per correction here (time, client, model sha256, input, "
+                  "output, sd), rotated");
+  cmd->add_option("--audit-max-mb", args->audit_max_mb, "rotate the audit log at this size (default 64)")
+      ->check(CLI::Range(0.004, 1e6));
+  cmd->add_option("--audit-keep", args->audit_keep, "rotated audit logs kept (default 5)")
+      ->check(CLI::Range(1, 1000));
+  cmd->callback([args] { run_serve(*args); });
+}
+
+}  // namespace
+
+VRREG_REGISTER_COMMAND(38, add_serve_command);
+
+}  // namespace vrreg::cli

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: Apache-2.0
+// vrreg snippet: the robot-program function that asks `vrreg serve` for a correction (URScript
+// for Universal Robots, KRL over EthernetKRL for KUKA), with its timeout and failure path.
+#include <cstdio>
+
+#include "cli_support.hpp"
+#include "command_registry.hpp"
+#include "serve/service.hpp"
+#include "serve/snippets.hpp"
+#include "vrreg/io/atomic_write.hpp"
+#include "vrreg/io/input_file.hpp"
+
+namespace vrreg::cli {
+namespace {
+
+struct SnippetArgs {
+  std::string language;
+  std::string model;
+  std::string connect = "127.0.0.1:30401";
+  double timeout_s = 2.0;
+  std::string token_file;
+  std::string output;
+  std::string eki_config;
+};
+
+void run_snippet(const SnippetArgs& args) {
+  serve::SnippetOptions o;
+  o.model = args.model;
+  const serve::Endpoint at = serve::parse_endpoint(args.connect);
+  o.host = at.address;
+  o.port = at.port;
+  o.timeout_s = args.timeout_s;
+  if (!args.token_file.empty()) {
+    std::string text = io::read_input_file(args.token_file);
+    text.resize(std::min(text.size(), text.find_first_of("\r\n")));
+    o.token = text;
+  }
+  std::vector<io::OutputFile> outputs;
+  if (args.language == "urscript") {
+    if (!args.eki_config.empty()) throw InputError("--eki-config: for krl only");
+    outputs.push_back({args.output, serve::urscript_client(o)});
+  } else {
+    if (args.eki_config.empty()) {
+      throw InputError("--eki-config: krl needs the EthernetKRL configuration file (vrreg.xml)");
+    }
+    outputs.push_back({args.output, serve::krl_client(o)});
+    outputs.push_back({args.eki_config, serve::krl_eki_config(o)});
+  }
+  io::write_files_atomically(outputs);
+  for (const io::OutputFile& f : outputs) std::printf("wrote %s\n", f.path.c_str());
+}
+
+void add_snippet_command(CLI::App& app) {
+  auto args = std::make_shared<SnippetArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "snippet",
+      "Write the robot-program function that asks 'vrreg serve' for a correction (urscript: "
+      "vrreg_correct(p); krl: VRREG_CORRECT over EthernetKRL)");
+  cmd->add_option("language", args->language, "urscript or krl")
+      ->required()
+      ->check(CLI::IsMember({"urscript", "krl"}));
+  cmd->add_option("--model", args->model, "the served model's name (as 'vrreg serve' names it)")
+      ->required();
+  cmd->add_option("--connect", args->connect,
+                  "the service's line-protocol address as the robot reaches it (default "
+                  "127.0.0.1:30401)");
+  cmd->add_option("--timeout-s", args->timeout_s, "no answer within this: stop (default 2)")
+      ->check(CLI::Range(0.001, 60.0));
+  add_input_option(*cmd, "--token-file", args->token_file,
+                   "the service's token (written into the program: keep the program private)");
+  add_output_option(*cmd, "-o,--output", args->output, "write the function here")->required();
+  add_output_option(*cmd, "--eki-config", args->eki_config,
+                    "krl: write the EthernetKRL configuration (XML) here");
+  cmd->callback([args] { run_snippet(*args); });
+}
+
+}  // namespace
+
+VRREG_REGISTER_COMMAND(39, add_snippet_command);
+
+}  // namespace vrreg::cli

@@ -1,0 +1,86 @@
+# SPDX-License-Identifier: Apache-2.0
+"""vrreg.Client against a running `vrreg serve`: the numbers of `vrreg correct`, refusals raised."""
+import csv
+import os
+import re
+import subprocess
+import time
+
+import numpy as np
+import pytest
+
+import vrreg
+from conftest import SOURCE_DIR
+
+
+@pytest.fixture(scope="module")
+def service(tmp_path_factory, example_cell):
+    path = os.environ.get("VRREG_CLI", str(SOURCE_DIR / "build" / "release" / "bin" / "vrreg"))
+    if not os.path.exists(path):
+        pytest.skip(f"the vrreg command is not built ({path}); set VRREG_CLI")
+    d = tmp_path_factory.mktemp("serve")
+    model = d / "cell.json"
+    subprocess.run([path, "register", "--fiducials", example_cell, "--interpolation", "kriging",
+                    "-o", str(model)], check=True, capture_output=True)
+    proc = subprocess.Popen([path, "serve", "--model", f"cell={model}", "--listen", "127.0.0.1:0"],
+                            stderr=subprocess.PIPE, text=True)
+    port = None
+    deadline = time.time() + 60
+    while port is None and time.time() < deadline:
+        line = proc.stderr.readline()
+        m = re.search(r"line protocol on 127\.0\.0\.1:(\d+)", line)
+        if m:
+            port = int(m.group(1))
+    assert port, "vrreg serve did not start"
+    yield path, model, port, d
+    proc.terminate()
+    proc.wait(timeout=30)
+
+
+def test_client_answers_as_correct(service, example_cell):
+    path, model, port, d = service
+    rows = [r for r in csv.reader(line for line in open(example_cell) if not line.startswith("#"))]
+    header = rows[0]
+    ix = [header.index(c) for c in ("sensor_x_mm", "sensor_y_mm", "sensor_z_mm")]
+    points = {}
+    for r in rows[1:]:
+        if r[header.index("role")] == "target" and r[0] not in points:
+            points[r[0]] = [r[i] for i in ix]
+    pts = d / "points.csv"
+    pts.write_text("point,role,sensor_x_mm,sensor_y_mm,sensor_z_mm\n" +
+                   "".join(f"{k},target,{','.join(v)}\n" for k, v in points.items()))
+    out = d / "out.csv"
+    subprocess.run([path, "correct", "--model", str(model), "--points", str(pts), "-o", str(out)],
+                   check=True, capture_output=True)
+    expected = [r for r in csv.reader(line for line in open(out) if not line.startswith("#"))][1:]
+    with vrreg.Client(port=port) as client:
+        compared = 0
+        for (name, xyz), row in zip(points.items(), expected):
+            assert row[0] == name
+            if row[2] != "ok":
+                with pytest.raises(vrreg.ServiceError) as e:
+                    client.correct("cell", [float(v) for v in xyz])
+                assert e.value.code == 3
+                continue
+            c = client.correct("cell", [float(v) for v in xyz])
+            np.testing.assert_array_equal(c.robot_mm, [float(v) for v in row[3:6]])
+            assert c.sd_mm == float(row[12])
+            compared += 1
+        assert compared > 5
+
+
+def test_client_refusals_raise(service):
+    _, _, port, _ = service
+    with vrreg.Client(port=port) as client:
+        with pytest.raises(vrreg.ServiceError) as e:
+            client.correct("no-such-model", [1.0, 2.0, 3.0])
+        assert e.value.code == 2
+        with pytest.raises(vrreg.ServiceError) as e:
+            client.correct("cell", [1e7, 0.0, 0.0])
+        assert e.value.code == 3
+        c = client.correct("cell", [1e7, 0.0, 0.0], extrapolate=True)
+        assert c.sd_mm > 0
+        with pytest.raises(ValueError):
+            client.correct("cell", [float("nan"), 0.0, 0.0])
+        with pytest.raises(ValueError):
+            client.correct("cell", [1.0, 2.0])

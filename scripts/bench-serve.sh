@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# The correction service under load (docs/serve.md, docs/benchmarks.md), over loopback on this
+# machine: p50 / p99 latency and corrections per second with 1, 16 and 64 clients, on the line
+# protocol and on HTTP, for an A1-size kriging model (tabulated), the simulated A1 cell's kriging
+# model (which keeps its exact form) and its RRBC grid model, beside a minimal Python service
+# wrapping scipy's RBFInterpolator (python/benchmarks/serve_peer.py). Every line-protocol reply of
+# vrreg is checked against `vrreg correct`'s CSV (wrong = 0).
+#   scripts/bench-serve.sh [SECONDS_PER_RUN]        (default 5; needs the release build)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-5}"
+build=build/release
+vrreg=$build/bin/vrreg
+load=$build/benchmarks/vrreg_serve_load
+for f in "$vrreg" "$load"; do
+  [[ -x $f ]] || { echo "bench-serve: $f missing: cmake --build $build" >&2; exit 2; }
+done
+work=$(mktemp -d)
+pids=()
+cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; rm -rf "$work"; }
+trap cleanup EXIT
+
+/usr/bin/python3 python/benchmarks/serve_cell.py "$work/lattice.csv" "$work/lattice.txt"
+"$vrreg" register --fiducials "$work/lattice.csv" --interpolation kriging -o "$work/lattice.json" >/dev/null
+"$vrreg" simulate ur5 A1 --seed 1 -o "$work/a1.csv" >/dev/null
+"$vrreg" register --fiducials "$work/a1.csv" --interpolation kriging -o "$work/a1-kriging.json" >/dev/null
+"$vrreg" register --fiducials "$work/a1.csv" -o "$work/a1-grid.json" >/dev/null
+# The A1 targets' first readings, as points to correct.
+awk -F, '!/^#/ && $2 == "target" && !seen[$1]++ { print $6, $7, $8 }' "$work/a1.csv" > "$work/a1.txt"
+
+# What `vrreg correct` writes, as the line protocol would reply it.
+expect() {  # MODEL_JSON POINTS_TXT OUT
+  awk 'BEGIN { print "point,role,sensor_x_mm,sensor_y_mm,sensor_z_mm" } { print "p" NR ",target," $1 "," $2 "," $3 }' "$2" > "$work/points.csv"
+  "$vrreg" correct --model "$1" --points "$work/points.csv" -o "$work/corrected.csv" >/dev/null
+  awk -F, '!/^#/ && NR > 2 { if ($3 == "ok" || $3 == "extrapolated") print "(" $4 "," $5 "," $6 "," ($13 == "" ? 0 : $13) ")"; else print "(0,0,0,-3)" }' "$work/corrected.csv" > "$3"
+}
+expect "$work/lattice.json" "$work/lattice.txt" "$work/lattice.expect"
+expect "$work/a1-kriging.json" "$work/a1.txt" "$work/a1-kriging.expect"
+expect "$work/a1-grid.json" "$work/a1.txt" "$work/a1-grid.expect"
+
+port_of() {  # LOG PATTERN
+  for _ in $(seq 600); do
+    port=$(grep -o "$2 on 127.0.0.1:[0-9]*" "$1" | grep -o '[0-9]*$' || true)
+    [[ -n $port ]] && { echo "$port"; return; }
+    sleep 0.1
+  done
+  echo "bench-serve: no $2 port in $1" >&2; exit 1
+}
+"$vrreg" serve --model "lattice=$work/lattice.json" --model "a1k=$work/a1-kriging.json" \
+  --model "a1g=$work/a1-grid.json" --listen 127.0.0.1:0 --http 127.0.0.1:0 2> "$work/serve.log" &
+pids+=($!)
+line=$(port_of "$work/serve.log" "line protocol")
+http=$(port_of "$work/serve.log" "HTTP")
+/usr/bin/python3 python/benchmarks/serve_peer.py --model "$work/lattice.json" --name lattice \
+  --port 0 > "$work/peer.log" 2>&1 &
+pids+=($!)
+peer=$(port_of "$work/peer.log" "ready")
+
+echo "| service | model | protocol | clients | corrections/s | p50 | p99 | wrong |"
+echo "|---|---|---|---|---|---|---|---|"
+run() {  # SERVICE MODEL PROTOCOL ADDRESS CLIENTS POINTS [EXPECT]
+  local args=("--$3" "$4" --model "$2" --points "$6" --clients "$5" --seconds "$seconds")
+  [[ -n ${7:-} ]] && args+=(--expect "$7")
+  "$load" "${args[@]}" | /usr/bin/python3 -c "
+import json, sys
+r = json.load(sys.stdin)
+print(f\"| $1 | $2 | {r['protocol']} | {r['clients']} | {r['per_second']:.0f} | {r['p50_us']:.0f} us | {r['p99_us']:.0f} us | {r['wrong']} |\")"
+}
+for c in 1 16 64; do run vrreg lattice line 127.0.0.1:$line $c "$work/lattice.txt" "$work/lattice.expect"; done
+for c in 1 16 64; do run vrreg lattice http 127.0.0.1:$http $c "$work/lattice.txt"; done
+for c in 1 16 64; do run vrreg a1g line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-grid.expect"; done
+for c in 1 16; do run vrreg a1k line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-kriging.expect"; done
+for c in 1 16 64; do run "scipy peer" lattice line 127.0.0.1:$peer $c "$work/lattice.txt"; done

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "http_api.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "vrreg/core/file_error.hpp"
+#include "vrreg/io/json_text.hpp"
+
+namespace vrreg::serve {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kMaxAbsCoordinateMm = 1e9;
+
+struct Refused {
+  std::string reason;
+};
+
+double number_at(const json& v, const std::string& where) {
+  if (!v.is_number()) throw Refused{where + ": expected a number"};
+  const double x = v.get<double>();
+  if (!std::isfinite(x) || std::abs(x) > kMaxAbsCoordinateMm) throw Refused{where + ": not a finite number within 1e9"};
+  return x;
+}
+
+void read_point(const json& item, const std::string& where, PointRequest& out) {
+  if (!item.is_object()) throw Refused{where + ": expected an object"};
+  for (const auto& [key, value] : item.items()) {
+    if (key != "model" && key != "sensor_mm" && key != "joints_rad" && key != "config" &&
+        key != "extrapolate" && key != "points") {
+      throw Refused{where + ": unknown key '" + key + "'"};
+    }
+  }
+  const auto s = item.find("sensor_mm");
+  if (s == item.end() || !s->is_array() || s->size() != 3) {
+    throw Refused{where + ".sensor_mm: expected [x, y, z] in mm"};
+  }
+  for (int a = 0; a < 3; ++a) {
+    out.sensor_mm(a) = number_at((*s)[static_cast<std::size_t>(a)], where + ".sensor_mm");
+  }
+  if (const auto q = item.find("joints_rad"); q != item.end()) {
+    if (!q->is_array() || q->empty() || q->size() > 16) {
+      throw Refused{where + ".joints_rad: expected 1 to 16 angles in rad"};
+    }
+    for (const json& v : *q) {
+      const double angle = number_at(v, where + ".joints_rad");
+      if (std::abs(angle) > 100.0) throw Refused{where + ".joints_rad: not an angle in rad"};
+      out.joints_rad.push_back(angle);
+    }
+  }
+  if (const auto c = item.find("config"); c != item.end()) {
+    if (!c->is_number_integer()) throw Refused{where + ".config: expected an integer label"};
+    const auto label = c->get<long long>();
+    if (label < -1000000 || label > 1000000) throw Refused{where + ".config: out of range"};
+    out.config = static_cast<int>(label);
+  }
+  if (const auto e = item.find("extrapolate"); e != item.end()) {
+    if (!e->is_boolean()) throw Refused{where + ".extrapolate: expected true or false"};
+    out.extrapolate = e->get<bool>();
+  }
+}
+
+json mm3_json(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json answer_object(const PointAnswer& a) {
+  json j;
+  j["status"] = a.status;
+  j["code"] = static_cast<int>(a.code);
+  if (a.code == ReplyCode::kOk) {
+    j["robot_mm"] = mm3_json(a.robot_mm);
+    j["uncorrected_robot_mm"] = mm3_json(a.uncorrected_robot_mm);
+    j["predicted_sd_mm"] = a.sd_mm;
+  } else {
+    j["error"] = a.reason;
+    if (a.code == ReplyCode::kNotCorrectable) j["uncorrected_robot_mm"] = mm3_json(a.uncorrected_robot_mm);
+  }
+  return j;
+}
+
+std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+
+}  // namespace
+
+std::variant<HttpCorrectRequest, PointAnswer> parse_http_correct(std::string_view body,
+                                                                std::size_t max_batch) {
+  json doc;
+  try {  // within the limits of vrreg's JSON files: nesting, number range, UTF-8
+    doc = io::parse_json_document(std::string(body), "request body", "correction request");
+  } catch (const FileError& e) {
+    return PointAnswer::refusal(ReplyCode::kMalformed, e.what());
+  }
+  try {
+    if (!doc.is_object()) throw Refused{"body: expected an object"};
+    const auto m = doc.find("model");
+    if (m == doc.end() || !m->is_string()) throw Refused{"model: expected the model's name"};
+    HttpCorrectRequest out;
+    PointRequest common;
+    common.model = m->get<std::string>();
+    if (const auto p = doc.find("points"); p != doc.end()) {
+      out.batch = true;
+      if (!p->is_array()) throw Refused{"points: expected an array"};
+      if (p->size() > max_batch) {
+        return PointAnswer::refusal(ReplyCode::kLimit, "points: " + std::to_string(p->size()) +
+                                                           " in one batch, at most " +
+                                                           std::to_string(max_batch));
+      }
+      if (doc.contains("sensor_mm")) throw Refused{"body: give sensor_mm or points, not both"};
+      if (const auto e = doc.find("extrapolate"); e != doc.end()) {
+        if (!e->is_boolean()) throw Refused{"extrapolate: expected true or false"};
+        common.extrapolate = e->get<bool>();
+      }
+      for (std::size_t i = 0; i < p->size(); ++i) {
+        PointRequest point = common;
+        const json& item = (*p)[i];
+        if (item.is_object() && (item.contains("model") || item.contains("points"))) {
+          throw Refused{"points[" + std::to_string(i) + "]: model and points belong to the body"};
+        }
+        read_point(item, "points[" + std::to_string(i) + "]", point);
+        out.points.push_back(std::move(point));
+      }
+    } else {
+      PointRequest point = common;
+      read_point(doc, "body", point);
+      out.points.push_back(std::move(point));
+    }
+    return out;
+  } catch (const Refused& r) {
+    return PointAnswer::refusal(ReplyCode::kMalformed, r.reason);
+  } catch (const std::exception& e) {  // a number nlohmann cannot convert, ...
+    return PointAnswer::refusal(ReplyCode::kMalformed, e.what());
+  }
+}
+
+int http_status(ReplyCode code) {
+  switch (code) {
+    case ReplyCode::kOk: return 200;
+    case ReplyCode::kMalformed: return 400;
+    case ReplyCode::kUnauthorized: return 401;
+    case ReplyCode::kUnknownModel: return 404;
+    case ReplyCode::kLimit: return 413;
+    case ReplyCode::kNotCorrectable:
+    case ReplyCode::kInput: return 422;
+    case ReplyCode::kInternal: return 500;
+  }
+  return 500;
+}
+
+std::string answer_json(const PointAnswer& answer, const ModelIdentity* model) {
+  json j = answer_object(answer);
+  if (model) {
+    j["model"] = model->name;
+    j["sha256"] = model->sha256;
+  }
+  return dump(j);
+}
+
+std::string batch_json(const std::vector<PointAnswer>& answers, const ModelIdentity& model) {
+  json j;
+  j["model"] = model.name;
+  j["sha256"] = model.sha256;
+  json results = json::array();
+  for (const PointAnswer& a : answers) results.push_back(answer_object(a));
+  j["results"] = std::move(results);
+  return dump(j);
+}
+
+std::string health_json(const std::vector<std::shared_ptr<const ServedModel>>& models,
+                        const std::vector<std::string>& reload_errors,
+                        const std::string& audit_error) {
+  json j;
+  j["status"] = "ready";
+  json list = json::array();
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    const ModelIdentity& id = models[i]->identity();
+    json m;
+    m["name"] = id.name;
+    m["file"] = id.path;
+    m["sha256"] = id.sha256;
+    m["file_time"] = id.file_time_utc;
+    m["loaded_at"] = id.loaded_at_utc;
+    m["method"] = id.method;
+    m["n_fiducials"] = id.n_fiducials;
+    m["predicts_sd"] = id.predicts_sd;
+    if (i < reload_errors.size() && !reload_errors[i].empty()) m["last_reload_error"] = reload_errors[i];
+    list.push_back(std::move(m));
+  }
+  j["models"] = std::move(list);
+  if (!audit_error.empty()) j["audit_log_error"] = audit_error;
+  return dump(j);
+}
+
+}  // namespace vrreg::serve

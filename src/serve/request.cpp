@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "request.hpp"
+
+#include <utility>
+
+namespace vrreg::serve {
+
+const char* to_string(ReplyCode code) {
+  switch (code) {
+    case ReplyCode::kOk: return "ok";
+    case ReplyCode::kMalformed: return "malformed";
+    case ReplyCode::kUnknownModel: return "unknown model";
+    case ReplyCode::kNotCorrectable: return "not correctable";
+    case ReplyCode::kInput: return "missing input";
+    case ReplyCode::kUnauthorized: return "unauthorized";
+    case ReplyCode::kLimit: return "limit";
+    case ReplyCode::kInternal: return "internal error";
+  }
+  return "internal error";
+}
+
+PointAnswer PointAnswer::refusal(ReplyCode code, std::string reason) {
+  PointAnswer a;
+  a.code = code;
+  a.status = to_string(code);
+  a.reason = std::move(reason);
+  return a;
+}
+
+}  // namespace vrreg::serve

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// What a client of the correction service asks and what it is answered, whatever the protocol
+// (the line protocol for robot controllers, HTTP/JSON for cell software; docs/serve.md).
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vrreg::serve {
+
+/// One point to correct.
+struct PointRequest {
+  std::string model;                 ///< the served model's name
+  Eigen::Vector3d sensor_mm = Eigen::Vector3d::Zero();  ///< measured point, sensor frame [mm]
+  std::optional<int> config;         ///< arm configuration label (Procedure 2 models)
+  std::vector<double> joints_rad;    ///< commanded joints (the joint-space model) [rad]
+  bool extrapolate = false;          ///< correct outside the support too (status "extrapolated")
+};
+
+/// Reply codes: 0 is an answer; every other code is a refusal the client must handle. On the line
+/// protocol the code is sent as a negative sd, so a robot program tests `sd < 0`.
+enum class ReplyCode : int {
+  kOk = 0,
+  kMalformed = 1,       ///< the request could not be read
+  kUnknownModel = 2,    ///< no model of that name is served
+  kNotCorrectable = 3,  ///< outside the method's support (or grid, hull): no correction
+  kInput = 4,           ///< the model needs what the request lacks (joints, configuration)
+  kUnauthorized = 5,    ///< a token is required and was not given or is wrong
+  kLimit = 6,           ///< a bound was hit (line or body length, batch size, connections)
+  kInternal = 7,        ///< the service failed: a bug, reported, never a silent default
+};
+
+/// The name of a code for logs and JSON ("ok", "malformed", ...).
+const char* to_string(ReplyCode code);
+
+/// The answer to one point.
+struct PointAnswer {
+  ReplyCode code = ReplyCode::kOk;
+  std::string status;  ///< the corrector's status ("ok", "extrapolated", "outside support", ...)
+  std::string reason;  ///< why, when code != kOk
+  Eigen::Vector3d robot_mm = Eigen::Vector3d::Zero();  ///< what to command, robot frame [mm]
+  Eigen::Vector3d uncorrected_robot_mm = Eigen::Vector3d::Zero();  ///< R X + tau [mm]
+  /// Predicted sd of the corrected point's 3D error [mm]; 0 when the method predicts none (the
+  /// paper's stencils).
+  double sd_mm = 0.0;
+
+  static PointAnswer refusal(ReplyCode code, std::string reason);
+};
+
+}  // namespace vrreg::serve

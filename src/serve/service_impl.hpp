@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Internal to the service: what its sessions share. Includes Boost.Asio: only the service's own
+// sources include this.
+#include <utility>  // before Boost.Asio 1.74's awaitable.hpp, which uses std::exchange unincluded
+
+#include <boost/asio.hpp>
+#include <atomic>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "service.hpp"
+
+namespace vrreg::serve {
+
+namespace asio = boost::asio;
+using tcp = asio::ip::tcp;
+
+struct Service::Impl {
+  Impl(ServeOptions options, Log log);
+
+  // Declared so that io is destroyed after everything its pending sessions touch (options,
+  // registry, audit, counters) and before the acceptors it owns' services back.
+  ServeOptions options;
+  Log log;
+  ModelRegistry registry;
+  AuditLog audit;
+  std::atomic<unsigned long long> corrections{0};
+  std::atomic<unsigned long long> refusals{0};
+  std::atomic<unsigned long long> connections{0};
+  std::atomic<unsigned long long> rejected{0};
+  std::atomic<int> open{0};
+  std::atomic<bool> stopping{false};
+  std::atomic<bool> reloading{false};
+  asio::io_context io;
+  std::optional<asio::executor_work_guard<asio::io_context::executor_type>> work;
+  std::optional<tcp::acceptor> line_acceptor;
+  std::optional<tcp::acceptor> http_acceptor;
+  asio::thread_pool reloader{1};  ///< loads models off the threads that answer
+  std::vector<std::thread> threads;
+
+  /// Answers one point: finds the model, corrects, counts and audits.
+  PointAnswer answer(const PointRequest& request, const std::string& client, const char* protocol,
+                     std::shared_ptr<const ServedModel>* used = nullptr);
+  /// Whether `given` is the token (always true when the service has none).
+  [[nodiscard]] bool authorized(const std::string& given) const;
+
+  void log_line(const std::string& message) const;
+};
+
+/// `s` seconds as a steady-clock duration (timeouts are options in seconds).
+inline std::chrono::steady_clock::duration after_seconds(double s) {
+  return std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double>(s));
+}
+
+/// Counts an open connection for its lifetime.
+class OpenConnection {
+ public:
+  explicit OpenConnection(std::atomic<int>& open) : open_(open) { ++open_; }
+  ~OpenConnection() { --open_; }
+  OpenConnection(const OpenConnection&) = delete;
+  OpenConnection& operator=(const OpenConnection&) = delete;
+
+ private:
+  std::atomic<int>& open_;
+};
+
+/// "address:port" of the peer, or "?" when the socket has none any more.
+std::string peer_of(const tcp::socket& socket);
+
+asio::awaitable<void> line_session(Service::Impl& service, tcp::socket socket);
+asio::awaitable<void> http_session(Service::Impl& service, tcp::socket socket);
+
+}  // namespace vrreg::serve

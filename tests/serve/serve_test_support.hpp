@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Cells, models and a blocking client for the service's tests.
+#include <utility>  // before Boost.Asio 1.74, whose awaitable.hpp uses std::exchange
+
+#include <boost/asio.hpp>
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "io_test_helpers.hpp"
+#include "vrreg/io/model_json.hpp"
+#include "vrreg/vrreg.hpp"
+
+namespace vrreg::serve::testing {
+
+using vrreg::testing::read_text;
+using vrreg::testing::TempDir;
+
+/// A 5 x 5 x 5 lattice at 20 mm with a smooth robot error and 0.01 mm noise, sensor = robot
+/// turned and shifted: fiducials for a model of `method`.
+inline MeasuredPoints lattice_cell(unsigned seed = 7) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, 1e-5);
+  MeasuredPoints cell;
+  const int n = 5;
+  cell.robot_m.resize(3, n * n * n);
+  cell.sensor_m.resize(3, n * n * n);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).matrix();
+  const Eigen::Vector3d t(-1.0, 0.3, 0.2);
+  int k = 0;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      for (int l = 0; l < n; ++l, ++k) {
+        const Eigen::Vector3d robot(0.4 + 0.02 * i, -0.1 + 0.02 * j, 0.3 + 0.02 * l);
+        const Eigen::Vector3d error(1.5e-4 * std::sin(robot.x() / 0.06), 1.2e-4 * std::cos(robot.y() / 0.045),
+                                    1e-4 * std::sin(robot.z() / 0.05));
+        cell.robot_m.col(k) = robot;
+        Eigen::Vector3d measured = robot + error;
+        for (int a = 0; a < 3; ++a) measured(a) += noise(rng);
+        cell.sensor_m.col(k) = R.transpose() * (measured - t);
+      }
+    }
+  }
+  return cell;
+}
+
+/// Registers the lattice cell with `method` and writes the model to `path`.
+inline RegistrationModel write_model(const std::string& path, InterpolationMethod method,
+                                     unsigned seed = 7) {
+  RegisterOptions options;
+  options.interpolation.method = method;
+  const RegisterResult r = register_fiducials(lattice_cell(seed), options);
+  io::write_model_json(path, r.model);
+  return r.model;
+}
+
+/// A blocking line-protocol client.
+class LineClient {
+ public:
+  explicit LineClient(unsigned short port) : socket_(io_) {
+    socket_.connect({boost::asio::ip::make_address("127.0.0.1"), port});
+    socket_.set_option(boost::asio::ip::tcp::no_delay(true));
+  }
+  /// Sends `bytes` as they are.
+  void send(const std::string& bytes) { boost::asio::write(socket_, boost::asio::buffer(bytes)); }
+  /// The next reply line, '\n' included; "" when the service closed the connection.
+  std::string read_line() {
+    boost::system::error_code ec;
+    const std::size_t n = boost::asio::read_until(socket_, boost::asio::dynamic_buffer(buffer_), '\n', ec);
+    if (ec) return "";
+    std::string line = buffer_.substr(0, n);
+    buffer_.erase(0, n);
+    return line;
+  }
+  std::string ask(const std::string& line) {
+    send(line);
+    return read_line();
+  }
+  boost::asio::ip::tcp::socket& socket() { return socket_; }
+
+ private:
+  boost::asio::io_context io_;
+  boost::asio::ip::tcp::socket socket_;
+  std::string buffer_;
+};
+
+/// One HTTP/1.1 request on a fresh connection; returns "STATUS BODY".
+std::string http_request(unsigned short port, const std::string& method, const std::string& target,
+                         const std::string& body, const std::string& extra_headers = "");
+
+}  // namespace vrreg::serve::testing
