@@ -86,6 +86,9 @@ TEST(ServiceSoak, NoWrongAnswerNoLostRequestNoGrowthAcrossReloadsAndHostileClien
   const auto end = std::chrono::steady_clock::now() +
                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                        std::chrono::duration<double>(soak_seconds()));
+  // The run ends when both the time is up and the 100 reloads are done (slower under sanitizers).
+  std::atomic<bool> reloaded_all{false};
+  const auto running = [&] { return !reloaded_all || std::chrono::steady_clock::now() < end; };
   std::atomic<long> answered{0};
   std::atomic<long> wrong{0};
   std::atomic<long> lost{0};
@@ -94,7 +97,7 @@ TEST(ServiceSoak, NoWrongAnswerNoLostRequestNoGrowthAcrossReloadsAndHostileClien
   for (int t = 0; t < 6; ++t) {  // good clients: every answer is model A's or model B's
     threads.emplace_back([&, t] {
       LineClient c(port);
-      for (std::size_t i = static_cast<std::size_t>(t); std::chrono::steady_clock::now() < end; ++i) {
+      for (std::size_t i = static_cast<std::size_t>(t); running(); ++i) {
         const std::size_t k = i % requests.size();
         const std::string r = c.ask(requests[k]);
         if (r.empty()) {
@@ -108,17 +111,18 @@ TEST(ServiceSoak, NoWrongAnswerNoLostRequestNoGrowthAcrossReloadsAndHostileClien
   }
   threads.emplace_back([&] {  // 100 reloads, alternating the file's content, spread over the run
     const double step = soak_seconds() / 110.0;
-    for (int i = 0; i < 100 && std::chrono::steady_clock::now() < end; ++i) {
+    for (int i = 0; i < 100; ++i) {
       std::filesystem::copy_file(i % 2 == 0 ? b_path : a_path, path + ".new",
                                  std::filesystem::copy_options::overwrite_existing);
       std::filesystem::rename(path + ".new", path);
       reloads += service.reload(false);
       std::this_thread::sleep_for(std::chrono::duration<double>(step));
     }
+    reloaded_all = true;
   });
   threads.emplace_back([&] {  // disconnects mid-request and garbage
     std::mt19937 rng(5);
-    while (std::chrono::steady_clock::now() < end) {
+    while (running()) {
       LineClient c(port);
       std::string junk(static_cast<std::size_t>(rng() % 3000), '\0');
       for (char& ch : junk) ch = static_cast<char>(rng());
@@ -128,7 +132,7 @@ TEST(ServiceSoak, NoWrongAnswerNoLostRequestNoGrowthAcrossReloadsAndHostileClien
     }
   });
   threads.emplace_back([&] {  // a client that never reads: dropped after the io timeout
-    while (std::chrono::steady_clock::now() < end) {
+    while (running()) {
       LineClient c(port);
       boost::system::error_code ec;
       std::string many;
@@ -141,16 +145,23 @@ TEST(ServiceSoak, NoWrongAnswerNoLostRequestNoGrowthAcrossReloadsAndHostileClien
   const long rss_early = resident_kib();
   for (std::thread& t : threads) t.join();
   const long rss_late = resident_kib();
+  // Connections end when their clients go; the one that never read is dropped by the watchdog.
+  for (int i = 0; i < 300 && service.stats().open_connections > 0; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_EQ(service.stats().open_connections, 0);
   service.stop();
 
   EXPECT_EQ(wrong.load(), 0);
   EXPECT_EQ(lost.load(), 0);
   EXPECT_GT(answered.load(), 1000);
-  EXPECT_GE(reloads.load(), std::min(100, static_cast<int>(soak_seconds() * 10)));
+  EXPECT_EQ(reloads.load(), 100);  // every reload of a changed file swapped the model in
   // Growth over the last three quarters of the run: models swapped out and connections closed
   // are freed. (Allocator caches and the audit buffer stay well within this.)
-  EXPECT_LT(rss_late - rss_early, 16 * 1024) << rss_early << " KiB -> " << rss_late << " KiB";
-  EXPECT_EQ(service.stats().open_connections, 0);
+  // Under the sanitizers freed memory sits in ASan's quarantine: LeakSanitizer checks instead.
+  if (std::getenv("VRREG_SANITIZED") == nullptr) {
+    EXPECT_LT(rss_late - rss_early, 16 * 1024) << rss_early << " KiB -> " << rss_late << " KiB";
+  }
 }
 
 }  // namespace
