@@ -27,4 +27,9 @@ class ProgressBar {
   std::mutex mutex_;
 };
 
+/// Draws the library's long stages (vrreg/core/progress.hpp) on stderr when it is a terminal
+/// (never into a file or pipe): a stage shows once it has run 1 s, is redrawn at most 10 times a
+/// second, and its line is cleared when it ends.
+void install_terminal_progress();
+
 }  // namespace vrreg::cli
