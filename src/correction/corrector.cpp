@@ -325,7 +325,7 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
   impl->index_known(data);
   impl->field_scales(data);
   const InterpolationMethod fitted = impl->fitted->method();
-  if (options.tabulate && data.size() <= detail::kLargeCellFiducials &&
+  if (options.tabulate && data.size() <= kLargeCellFiducials &&
       (fitted == InterpolationMethod::kKriging || fitted == InterpolationMethod::kRbf)) {
     const Impl& m = *impl;
     const detail::ExactField exact = [&m](const Points3& at, Points3& c, Eigen::VectorXd& s) {

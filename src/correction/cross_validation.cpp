@@ -62,7 +62,7 @@ MethodPredictions predict_held_out(const FittedMethod& fitted, const CorrectorDa
 std::vector<int> held_out_groups(Eigen::Index n, const std::vector<int>& fold_of,
                                  const std::vector<Eigen::Index>& unit_of, int folds) {
   std::vector<int> group(fold_of);
-  if (n <= detail::kLargeCellFiducials || folds < 1) return group;
+  if (n <= kLargeCellFiducials || folds < 1) return group;
   std::vector<Eigen::Index> units;  // fold 0's units, in order
   std::vector<char> seen(static_cast<std::size_t>(n), 0);
   for (Eigen::Index j = 0; j < n; ++j) {
@@ -73,8 +73,8 @@ std::vector<int> held_out_groups(Eigen::Index n, const std::vector<int>& fold_of
     }
   }
   const std::size_t stride = std::max<std::size_t>(
-      1, (units.size() + static_cast<std::size_t>(detail::kLargeCellHeldOut) - 1) /
-             static_cast<std::size_t>(detail::kLargeCellHeldOut));
+      1, (units.size() + static_cast<std::size_t>(kLargeCellHeldOut) - 1) /
+             static_cast<std::size_t>(kLargeCellHeldOut));
   std::vector<char> chosen(static_cast<std::size_t>(n), 0);
   for (std::size_t k = 0; k < units.size(); k += stride)
     chosen[static_cast<std::size_t>(units[k])] = 1;
@@ -166,7 +166,7 @@ CrossValidationRow cross_validate(InterpolationMethod method, const CorrectorDat
   if (m.unavailable != nullptr) row.note = m.unavailable(data, settings);
   if (!row.note.empty()) return row;
   const auto start = std::chrono::steady_clock::now();
-  const int groups = data.size() > detail::kLargeCellFiducials ? 1 : folds;
+  const int groups = data.size() > kLargeCellFiducials ? 1 : folds;
   ProgressStage progress("cross-validating " + std::string(to_string(method)), 1 + groups);
   FitOutcome all = m.fit(data, settings);
   progress.advance();
@@ -251,7 +251,7 @@ CrossValidation choose_by_cross_validation(const CorrectorData& data,
                      folds << "-fold cross-validation needs at least " << 2 * folds
                            << " fiducials, got " << data.size());
   CrossValidation out;
-  out.folds = folds;
+  out.folds = data.size() > kLargeCellFiducials ? 1 : folds;
   out.seed = seed;
   const std::vector<Eigen::Index> units = fold_units(data.fiducials_robot_m);
   out.n_units = units.empty() ? 0 : *std::max_element(units.begin(), units.end()) + 1;
