@@ -3,7 +3,7 @@
 # A large simulated cell and the time and peak memory of every correction method on it
 # (docs/benchmarks.md, "Large cells"):
 #
-#   scripts/bench-large-cell.sh [-n NODES] [-m "METHODS"] [-k] [VRREG] [DIR]
+#   scripts/bench-large-cell.sh [-n NODES] [-m "METHODS"] [-k] [-c CELL] [VRREG] [DIR]
 #
 # NODES^3 fiducials on a 10 mm lattice about the UR5 test bed's volume centre, with joints (vrreg
 # plan) and 1 000 targets inside, measured on the simulated UR5 (seed 1); then for each method
@@ -11,15 +11,20 @@
 # --targets targets.csv --json`, each under /usr/bin/time -v. Prints one Markdown row per method
 # and command: wall time, user time, peak resident memory, exit status. -k keeps the cell in DIR
 # (default /tmp/vrreg-large-cell) between runs. Default: 47 nodes (103 823 fiducials), all methods.
+# -c CELL measures CELL-fiducials.csv and CELL-targets.csv instead (e.g. 10^6 fiducials without
+# joints: scripts/make-large-input.py --fiducials 1000000 --targets 1000 --targets-inside
+# --pitch-mm 2.5 -o c.csv; scripts/make-large-cell.py split c.csv c-fiducials.csv c-targets.csv).
 set -eu
 nodes=47
 methods="linear grid octuplet trilinear scattered kriging rbf joint auto"
 keep=0
-while getopts n:m:k opt; do
+cell=
+while getopts n:m:kc: opt; do
   case $opt in
     n) nodes=$OPTARG ;;
     m) methods=$OPTARG ;;
     k) keep=1 ;;
+    c) cell=$OPTARG ;;
     *) exit 2 ;;
   esac
 done
@@ -29,8 +34,9 @@ vrreg=${1:-$here/../build/release/bin/vrreg}
 dir=${2:-/tmp/vrreg-large-cell}
 mkdir -p "$dir"
 rm -f "$dir"/centre_*.csv
-cell=$dir/cell-$nodes
-if [ "$keep" = 0 ] || [ ! -f "$cell-fiducials.csv" ]; then
+if [ -n "$cell" ]; then
+  nodes="$(($(grep -c ',fiducial,' "$cell-fiducials.csv")))"
+elif cell=$dir/cell-$nodes && { [ "$keep" = 0 ] || [ ! -f "$cell-fiducials.csv" ]; }; then
   half=$(/usr/bin/python3 "$here/make-large-cell.py" parts --nodes "$nodes" "$dir")
   plans=
   for centre in "$dir"/centre_*.csv; do
@@ -61,12 +67,17 @@ measure() {  # label, then the command: one table row
   why=$(grep -m1 '^vrreg: ' "$dir/time.txt" || true)
   echo "| $label | $wall | $user s | $((rss / 1024)) MiB | $status $why |"
 }
-echo "| command ($nodes^3 fiducials) | wall | user | peak RSS | exit |"
+case $nodes in
+  *[!0-9]*) ;;
+  *) [ "$nodes" -gt 1000 ] || nodes="$nodes^3" ;;
+esac
+echo "| command ($nodes fiducials) | wall | user | peak RSS | exit |"
 echo "|---|---:|---:|---:|---|"
 for m in $methods; do
   measure "register --interpolation $m" "$vrreg" register --fiducials "$cell-fiducials.csv" \
     --robot ur5 --interpolation "$m" $([ "$m" = octuplet ] && echo --cube-mm 10) \
     -o "$dir/model-$m.json"
+  cp "$dir/out.txt" "$dir/register-$m.txt"
   if [ -f "$dir/model-$m.json" ]; then
     measure "evaluate ($m)" "$vrreg" evaluate --model "$dir/model-$m.json" \
       --targets "$cell-targets.csv" --json
