@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 
@@ -46,7 +47,8 @@ MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source
   std::size_t header_line = 0;
   detail::MeasurementRow row;
   // A file of 10^6 readings takes seconds: its bytes are the progress, reported per MiB.
-  ProgressStage progress("reading " + source_name, bytes_left(in));
+  ProgressStage progress("reading " + std::filesystem::path(source_name).filename().string(),
+                         bytes_left(in));
   std::int64_t unreported = 0;
   while (reader.next(line)) {
     unreported += static_cast<std::int64_t>(line.size()) + 1;
