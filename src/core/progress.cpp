@@ -3,21 +3,33 @@
 
 #include <algorithm>
 #include <memory>
+#include <mutex>
 #include <utility>
 
 namespace vrreg {
 namespace {
 
-// The sink is read on every step from any thread and replaced rarely: a shared pointer swapped
-// atomically keeps a running stage's sink alive.
-std::atomic<std::shared_ptr<const ProgressSink>>& sink_slot() {
-  static std::atomic<std::shared_ptr<const ProgressSink>> slot;
+// The sink is read on every step from any thread and replaced rarely: a shared pointer copied
+// under a lock keeps a running stage's sink alive while another is installed.
+struct SinkSlot {
+  std::mutex mutex;
+  std::shared_ptr<const ProgressSink> sink;
+};
+
+SinkSlot& sink_slot() {
+  static SinkSlot slot;
   return slot;
+}
+
+std::shared_ptr<const ProgressSink> current_sink() {
+  SinkSlot& slot = sink_slot();
+  const std::lock_guard<std::mutex> lock(slot.mutex);
+  return slot.sink;
 }
 
 void report(std::string_view name, std::int64_t done, std::int64_t total,
             std::chrono::steady_clock::time_point start) {
-  const std::shared_ptr<const ProgressSink> sink = sink_slot().load(std::memory_order_acquire);
+  const std::shared_ptr<const ProgressSink> sink = current_sink();
   if (!sink || !*sink) return;
   (*sink)(name, done, total,
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -28,7 +40,9 @@ void report(std::string_view name, std::int64_t done, std::int64_t total,
 ProgressSink set_progress_sink(ProgressSink sink) {
   std::shared_ptr<const ProgressSink> next =
       sink ? std::make_shared<const ProgressSink>(std::move(sink)) : nullptr;
-  std::shared_ptr<const ProgressSink> previous = sink_slot().exchange(std::move(next));
+  SinkSlot& slot = sink_slot();
+  const std::lock_guard<std::mutex> lock(slot.mutex);
+  std::shared_ptr<const ProgressSink> previous = std::exchange(slot.sink, std::move(next));
   return previous ? *previous : ProgressSink{};
 }
 
@@ -36,7 +50,7 @@ ProgressStage::ProgressStage(std::string name, std::int64_t total)
     : name_(std::move(name)),
       total_(std::max<std::int64_t>(total, 1)),
       start_(std::chrono::steady_clock::now()),
-      active_(static_cast<bool>(sink_slot().load(std::memory_order_acquire))) {
+      active_(current_sink() != nullptr) {
   if (active_) report(name_, 0, total_, start_);
 }
 

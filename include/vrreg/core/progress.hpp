@@ -2,7 +2,8 @@
 #pragma once
 // Progress of long computations (a large cell's fit and cross-validation take seconds to
 // minutes), for a front end to show. The library only counts steps; the program installs a sink
-// that draws (the command line: a bar on a terminal). Without a sink a step is one atomic load.
+// that draws (the command line: a bar on a terminal). Without a sink a stage costs one lock when
+// it begins and nothing per step.
 #include <atomic>
 #include <chrono>
 #include <cstdint>
