@@ -14,6 +14,7 @@
 #include "progress_bar.hpp"
 #include "report_cli.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/progress.hpp"
 #include "vrreg/core/random.hpp"
 #include "vrreg/experiments/beyond_report.hpp"
 #include "vrreg/experiments/reproduction_csv.hpp"
@@ -95,8 +96,11 @@ void run_reproduce(const ReproduceArgs& args) {
 
   const auto start = std::chrono::steady_clock::now();
   ProgressBar progress(args.seeds * ex::reproduction_steps(options), !args.quiet);
+  // Its own bar counts the runs: the library's stages (each fit) would fight it for the line.
+  const ProgressSink stages = set_progress_sink({});
   const std::vector<ex::Reproduction> runs =
       ex::run_reproductions(seeds, options, [&progress] { progress.step(); });
+  set_progress_sink(stages);
   progress.finish();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -9,10 +9,18 @@
 namespace vrreg::cli {
 
 void print_cross_validation(const CrossValidation& cv) {
-  std::printf("  cross-validation              %d folds over the fiducials (fold shuffle seed %llu); "
-              "compared on the %lld fiducials every method predicted\n",
-              cv.folds, static_cast<unsigned long long>(cv.seed),
-              static_cast<long long>(cv.n_common));
+  if (cv.folds == 1) {
+    std::printf("  cross-validation              one held-out sample (a large cell: more than %lld "
+                "fiducials; fold shuffle seed %llu); compared on the %lld fiducials every "
+                "method predicted\n",
+                static_cast<long long>(kLargeCellFiducials),
+                static_cast<unsigned long long>(cv.seed), static_cast<long long>(cv.n_common));
+  } else {
+    std::printf("  cross-validation              %d folds over the fiducials (fold shuffle seed "
+                "%llu); compared on the %lld fiducials every method predicted\n",
+                cv.folds, static_cast<unsigned long long>(cv.seed),
+                static_cast<long long>(cv.n_common));
+  }
   std::printf("    method       compared     own (predicted)             x / y / z                     "
               "time\n");
   for (const CrossValidationRow& row : cv.rows) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "command_registry.hpp"
+#include "progress_bar.hpp"
 #include "vrreg/config.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/io/atomic_write.hpp"
@@ -27,6 +28,8 @@ std::vector<CommandEntry>& command_registry() {
 int main(int argc, char** argv) {
   // Ctrl-C or kill while an output is written leaves no temporary file behind.
   vrreg::io::remove_temporary_files_on_signal();
+  // Long stages (a large cell's fit) show a bar, on a terminal only: files and pipes never see it.
+  vrreg::cli::install_terminal_progress();
   CLI::App app{
       "vrreg: point-based vision-robot registration with Restoration of the Rigid Body "
       "Condition (RRBC).\nLengths are printed in mm. Run 'vrreg COMMAND --help' for a command.",

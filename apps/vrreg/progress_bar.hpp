@@ -27,4 +27,10 @@ class ProgressBar {
   std::mutex mutex_;
 };
 
+/// Draws the library's long stages (vrreg/core/progress.hpp) on stderr when it is a terminal
+/// (never into a file or pipe): the latest stage shows once it has run 1 s, with its steps and
+/// time, redrawn at most 10 times a second (and every 200 ms by a ticker, so a stage without
+/// steps still shows); the line is cleared when the last stage ends.
+void install_terminal_progress();
+
 }  // namespace vrreg::cli

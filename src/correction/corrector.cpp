@@ -10,9 +10,11 @@
 #include <limits>
 
 #include "buffers.hpp"
+#include "method_support.hpp"
 #include "method_tabulated.hpp"
 #include "point_index.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/progress.hpp"
 #include "vrreg/registration/fitzpatrick.hpp"
 
 namespace vrreg {
@@ -256,6 +258,9 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
   const MethodSettings settings =
       method_settings(options.interpolation, options.nearest_configuration);
   const InterpolationMethod method = options.interpolation.method;
+  const ProgressStage progress("fitting " + std::string(to_string(method)) + " to " +
+                                   std::to_string(data.size()) + " fiducials",
+                               1);
   // The method's cross-validation (auto's table, or the sd of a model without one of its own).
   const auto cross_validated = [&](const CrossValidationRow& row) {
     impl->cv_rms_m = row.rms_m;
@@ -320,7 +325,7 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
   impl->index_known(data);
   impl->field_scales(data);
   const InterpolationMethod fitted = impl->fitted->method();
-  if (options.tabulate &&
+  if (options.tabulate && data.size() <= kLargeCellFiducials &&
       (fitted == InterpolationMethod::kKriging || fitted == InterpolationMethod::kRbf)) {
     const Impl& m = *impl;
     const detail::ExactField exact = [&m](const Points3& at, Points3& c, Eigen::VectorXd& s) {
@@ -438,6 +443,7 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
   const Eigen::Index block = std::max<Eigen::Index>(method.block_size(), 1);
   const Eigen::Index n_blocks = (n + block - 1) / block;
   std::atomic<int> n_flagged{0};
+  ProgressStage progress("correcting " + std::to_string(n) + " points", n_blocks);
   const auto register_blocks = [&](Eigen::Index b0, Eigen::Index b1) {
     for (Eigen::Index i = b0 * block; i < std::min(n, b1 * block); ++i)
       out.uncorrected_robot_m.col(i) = T.apply(Eigen::Vector3d(query.sensor_m.col(i)));
@@ -468,6 +474,7 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
                                 : m.sd_source == SdSource::kLocalCv ? m.local_sd_m(out.uncorrected_robot_m.col(i))
                                                                     : m.cv_rms_m;
       }
+      progress.advance();
     }
     n_flagged.fetch_add(flagged, std::memory_order_relaxed);
   };

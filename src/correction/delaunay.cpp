@@ -13,6 +13,7 @@
 #include <tuple>
 #include <vector>
 
+#include "tet_mesh.hpp"
 #include "vrreg/core/check.hpp"
 
 namespace vrreg {
@@ -63,6 +64,24 @@ class Qhull {
   std::unique_ptr<qhT> qh_;
 };
 
+/// Qhull run on `coords` (x, y, z per point) with `options`; throws "`what` failed: ..." with
+/// qhull's first message. qhull keeps pointers into the coordinates: they must outlive it.
+class QhullRun {
+ public:
+  QhullRun(std::vector<coordT>& coords, std::string options, const std::string& what)
+      : qhull_(messages_.file()) {
+    const int exitcode =
+        qh_new_qhull(qhull_.get(), 3, static_cast<int>(coords.size() / 3), coords.data(), False,
+                     options.data(), nullptr, messages_.file());
+    VRREG_THROW_UNLESS(exitcode == 0, what << " failed: " << messages_.first_line());
+  }
+  [[nodiscard]] qhT* get() const { return qhull_.get(); }
+
+ private:
+  MessageBuffer messages_;
+  Qhull qhull_;
+};
+
 }  // namespace
 
 Tetrahedralization delaunay_tetrahedralization(const ConstPoints3Ref& points_m) {
@@ -91,14 +110,9 @@ Tetrahedralization delaunay_tetrahedralization(const ConstPoints3Ref& points_m) 
   for (std::size_t i = 0; i < sorted.size(); ++i) {
     for (int a = 0; a < 3; ++a) coords[3 * i + static_cast<std::size_t>(a)] = points_m(a, sorted[i]);
   }
-  MessageBuffer messages;
-  Qhull qhull(messages.file());
+  const QhullRun qhull(coords, "qhull d Qbb Qc Qz Q12 Qt",
+                       "Delaunay tetrahedralization of " + std::to_string(n) + " fiducials");
   qhT* qh = qhull.get();
-  char options[] = "qhull d Qbb Qc Qz Q12 Qt";
-  const int exitcode = qh_new_qhull(qh, 3, static_cast<int>(n), coords.data(), False, options,
-                                    nullptr, messages.file());
-  VRREG_THROW_UNLESS(exitcode == 0, "Delaunay tetrahedralization of "
-                                        << n << " fiducials failed: " << messages.first_line());
 
   std::vector<Eigen::Index> tet_of_facet(static_cast<std::size_t>(qh->facet_id) + 1, -1);
   Tetrahedralization out;
@@ -133,4 +147,28 @@ Tetrahedralization delaunay_tetrahedralization(const ConstPoints3Ref& points_m) 
   return out;
 }
 
+namespace detail {
+
+std::vector<HullPlane> convex_hull_planes(const ConstPoints3Ref& points_m) {
+  const Eigen::Index n = points_m.cols();
+  VRREG_THROW_UNLESS(n >= 4 && points_m.allFinite(),
+                     "the convex hull needs at least 4 finite fiducials, got " << n);
+  std::vector<coordT> coords(static_cast<std::size_t>(3 * n));
+  for (Eigen::Index j = 0; j < n; ++j) {
+    for (int a = 0; a < 3; ++a) coords[static_cast<std::size_t>(3 * j + a)] = points_m(a, j);
+  }
+  const QhullRun qhull(coords, "qhull", "the convex hull of " + std::to_string(n) + " fiducials");
+  qhT* qh = qhull.get();
+  std::vector<HullPlane> out;
+  facetT* facet = nullptr;
+  FORALLfacets {
+    HullPlane plane;
+    plane.normal_out = Eigen::Vector3d(facet->normal[0], facet->normal[1], facet->normal[2]);
+    plane.offset_m = -facet->offset;  // qhull: normal . x + offset > 0 outside
+    out.push_back(plane);
+  }
+  return out;
+}
+
+}  // namespace detail
 }  // namespace vrreg

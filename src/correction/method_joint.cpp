@@ -7,10 +7,12 @@
 #include <iomanip>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <sstream>
 
 #include "method_support.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/random.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/joint_error_model.hpp"
 
@@ -185,8 +187,32 @@ Eigen::Vector3d marker_on_flange_m(const CorrectorData& data) {
   return p_m;
 }
 
+// In a large cell the joint model is fitted on this many fiducials, drawn with a fixed seed: its
+// few hundred parameters are fixed by 3 x 5 000 equations to a few micrometres (the noise over
+// the square root of the redundancy), while its fit (periodic-term search, degree choice, QR
+// of 3J rows) grows with J: 10^5 fiducials took minutes and 1.1 GiB.
+constexpr Eigen::Index kLargeCellJointFit = 5000;
+
+// The fiducials a joint model is fitted on: all of them, or in a large cell a seeded sample
+// in their order.
+std::vector<Eigen::Index> joint_fit_sample(Eigen::Index n) {
+  std::vector<Eigen::Index> all(static_cast<std::size_t>(n));
+  std::iota(all.begin(), all.end(), Eigen::Index{0});
+  if (n <= kLargeCellFiducials) return all;
+  Random rng(1);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(kLargeCellJointFit); ++i) {
+    std::swap(all[i], all[i + static_cast<std::size_t>(rng.below(all.size() - i))]);
+  }
+  all.resize(static_cast<std::size_t>(kLargeCellJointFit));
+  std::sort(all.begin(), all.end());
+  return all;
+}
+
 std::unique_ptr<const JointMethod> fit_joint_model(
-    const CorrectorData& data, const kinematics::JointErrorModelOptions& options) {
+    const CorrectorData& all, const kinematics::JointErrorModelOptions& options) {
+  const bool sampled = all.size() > kLargeCellFiducials;
+  const CorrectorData sample = sampled ? all.subset(joint_fit_sample(all.size())) : CorrectorData{};
+  const CorrectorData& data = sampled ? sample : all;
   VRREG_THROW_UNLESS(data.robot && data.joints_rad.rows() == data.robot->n_joints(),
                      "joint interpolation needs the fiducials' joint angles and the robot");
   const Eigen::Vector3d p_flange_marker_m = marker_on_flange_m(data);
@@ -196,7 +222,7 @@ std::unique_ptr<const JointMethod> fit_joint_model(
       kinematics::JointErrorModel::fit(*data.robot,
                                        joint_columns(data.joints_rad, 0, data.size()),
                                        error_robot_m, options, p_flange_marker_m),
-      data.T_robot_sensor, field_support(data.fiducials_robot_m));
+      data.T_robot_sensor, field_support(all.fiducials_robot_m));
 }
 
 std::string joint_unavailable(const CorrectorData& data, const MethodSettings&) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "vrreg/correction/correction_method.hpp"
+#include "vrreg/correction/cross_validation.hpp"
 
 namespace vrreg::detail {
 
@@ -108,6 +109,10 @@ SupportBox field_support(const ConstPoints3Ref& fiducials_robot_m);
 
 /// Fewest fiducials a model of the whole field is fitted on.
 inline constexpr Eigen::Index kMinFieldModelFiducials = 12;
+
+// A large cell (vrreg/correction/cross_validation.hpp: over kLargeCellFiducials) also corrects
+// with kriging's and rbf's local models instead of a table: a table node costs a local solve, and
+// the table has ~15 nodes per fiducial.
 
 /// Why a field model that predicts from positions alone cannot be used: two fiducials at one
 /// nominal position in different arm configurations (a field of position cannot tell them apart);

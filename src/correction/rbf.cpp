@@ -37,6 +37,9 @@ void validate(const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_
                          options.min_log10_smoothing <= options.max_log10_smoothing,
                      "rbf: exact_limit and local_neighbours must exceed "
                          << terms << ", n_smoothing >= 1, min <= max smoothing exponent");
+  VRREG_THROW_UNLESS(!options.smoothing || (options.smoothing->allFinite() &&
+                                            (options.smoothing->array() >= 0.0).all()),
+                     "rbf: a given smoothing must be finite and >= 0");
 }
 
 }  // namespace rbf_model
@@ -70,6 +73,16 @@ RbfModel RbfModel::fit(const ConstPoints3Ref& positions_m, const ConstPoints3Ref
   VRREG_THROW_UNLESS(!duplicate, "rbf: fiducials " << (duplicate ? duplicate->first : 0) << " and "
                                                    << (duplicate ? duplicate->second : 0)
                                                    << " share a position");
+  if (options.smoothing && !impl->exact()) {
+    // A local model with its smoothing given needs nothing global: each query solves its own.
+    for (int axis = 0; axis < 3; ++axis) {
+      detail::RbfAxis& a = impl->axes[static_cast<std::size_t>(axis)];
+      a.smoothing = (*options.smoothing)(axis);
+      a.loo_rms = std::numeric_limits<double>::quiet_NaN();
+    }
+    impl->frame = detail::trend_frame(positions_m);
+    return RbfModel(std::move(impl));
+  }
   // The smoothing is chosen on all fiducials, or above exact_limit on the block of the
   // exact_limit fiducials nearest the centroid (same density, so lambda transfers).
   Points3 block = positions_m;
@@ -88,6 +101,10 @@ RbfModel RbfModel::fit(const ConstPoints3Ref& positions_m, const ConstPoints3Ref
   const detail::RbfSpectrum spectrum(block, options.polynomial_degree, impl->frame);
   for (int axis = 0; axis < 3; ++axis) {
     const Eigen::VectorXd y = block_values.row(axis).transpose();
+    if (options.smoothing) {
+      impl->axes[static_cast<std::size_t>(axis)] = spectrum.solve(y, (*options.smoothing)(axis));
+      continue;
+    }
     double best_lambda = 0.0;
     double best_sse = std::numeric_limits<double>::infinity();
     for (int k = 0; k < options.n_smoothing; ++k) {

@@ -50,4 +50,8 @@ struct TetMesh {
 /// Builds the geometry of `topology` over points_m [m].
 TetMesh make_tet_mesh(const Points3& points_m, Tetrahedralization topology);
 
+/// The planes of the convex hull of points_m [m] (qhull; coplanar facets merged), outward.
+/// Throws InputError when the points span no volume.
+std::vector<HullPlane> convex_hull_planes(const ConstPoints3Ref& points_m);
+
 }  // namespace vrreg::detail

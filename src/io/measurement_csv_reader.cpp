@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 
@@ -9,6 +11,7 @@
 #include "measurement_row.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/input_file.hpp"
+#include "vrreg/core/progress.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 
 namespace vrreg::io {
@@ -22,6 +25,16 @@ bool is_blank(const std::vector<std::string_view>& fields) {
   return true;
 }
 
+// Bytes left in `in` from where it stands, or 0 when it cannot seek (a pipe).
+std::int64_t bytes_left(std::istream& in) {
+  const std::streampos here = in.tellg();
+  if (here < 0) return 0;
+  in.seekg(0, std::ios::end);
+  const std::streampos end = in.tellg();
+  in.seekg(here);
+  return end < here ? 0 : static_cast<std::int64_t>(end - here);
+}
+
 }  // namespace
 
 MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source_name,
@@ -33,7 +46,16 @@ MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source
   std::optional<detail::LocationAccumulator> accumulator;
   std::size_t header_line = 0;
   detail::MeasurementRow row;
+  // A file of 10^6 readings takes seconds: its bytes are the progress, reported per MiB.
+  ProgressStage progress("reading " + std::filesystem::path(source_name).filename().string(),
+                         bytes_left(in));
+  std::int64_t unreported = 0;
   while (reader.next(line)) {
+    unreported += static_cast<std::int64_t>(line.size()) + 1;
+    if (unreported >= (std::int64_t{1} << 20)) {
+      progress.advance(unreported);
+      unreported = 0;
+    }
     const std::string_view content = detail::trim(line);
     if (content.empty() || content.front() == '#') continue;
     detail::split_fields(line, fields);

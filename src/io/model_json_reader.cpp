@@ -2,6 +2,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "model_chain_json.hpp"
 #include "model_marker_offset_json.hpp"
 #include "model_units.hpp"
+#include "vrreg/core/progress.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/input_file.hpp"
@@ -255,6 +257,8 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
 }
 
 RegistrationModel read_model_json(const std::string& path) {
+  // A large cell's model holds 10^5-10^6 fiducials: seconds to parse.
+  const ProgressStage progress("reading " + std::filesystem::path(path).filename().string(), 1);
   return parse_model_json(read_input_file(path), path);
 }
 

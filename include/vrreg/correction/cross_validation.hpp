@@ -15,6 +15,12 @@
 
 namespace vrreg {
 
+/// Above this many fiducials (a scanner's or laser tracker's cell) cross-validation holds out one
+/// seeded sample of about kLargeCellHeldOut fiducials, predicted by one model fitted on all the
+/// rest, instead of K folds (docs/field-models.md, "Large cells").
+inline constexpr Eigen::Index kLargeCellFiducials = 20000;
+inline constexpr Eigen::Index kLargeCellHeldOut = 2000;
+
 /// One method's K-fold cross-validation on the fiducials: each fold's corrections predicted by
 /// the model fitted on the other folds, at the fold's registered positions.
 struct CrossValidationRow {
@@ -38,6 +44,7 @@ struct CrossValidationRow {
 /// every compared method predicted (lattice and Delaunay methods cannot predict at the layout's
 /// edge; comparing each over its own subset would favour them).
 struct CrossValidation {
+  /// K folds, or 1: a large cell's one held-out sample (kLargeCellFiducials).
   int folds = 5;
   Eigen::Index n_common = 0;  ///< fiducials in the common comparison
   std::uint64_t seed = 1;     ///< of the shuffle that deals the fold units to folds

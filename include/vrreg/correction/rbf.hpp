@@ -5,6 +5,7 @@
 // (docs/field-models.md).
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "vrreg/core/types.hpp"
@@ -26,6 +27,10 @@ struct RbfOptions {
   double min_log10_smoothing = -9.0;
   double max_log10_smoothing = 1.0;
   int n_smoothing = 31;
+  /// Given smoothing per axis (kernel units, m^3, each finite and >= 0) instead of the
+  /// leave-one-out choice: e.g. a refit on most of the same fiducials keeps its parent's. A
+  /// local model then reports no LOO RMS (NaN).
+  std::optional<Eigen::Vector3d> smoothing;
 };
 
 /// A fitted cubic (r^3) RBF model with polynomial term, per axis.
