@@ -140,7 +140,20 @@ struct Corrector::Impl {
     const double registration_sq_m2 =
         std::max(0.0, expected_tre_squared(fiducials_robot_m, at_m, fle_sq_m2) -
                           expected_tre_squared(fiducials_robot_m, edge_m, fle_sq_m2));
-    return std::sqrt(sd_edge_m * sd_edge_m + growth_m * growth_m + registration_sq_m2);
+    // Outside the joint ranges (another arm configuration) the robot's errors are not those the
+    // registration absorbed: the rigid fit of the cell's systematic field tilts the mapping, and
+    // nothing measured bounds the difference. Its growth is Fitzpatrick's with a localisation
+    // error common to all fiducials (one independent sample, not N) whose mean square is the
+    // spread's: the difference of two draws of the field, the one absorbed and the one met there.
+    double tilt_sq_m2 = 0.0;
+    if (!std::isfinite(moved_m)) {
+      const Eigen::Vector3d centroid_m = fiducials_robot_m.rowwise().mean();
+      const double variance_m2 = field_spread_m * field_spread_m;
+      const auto n = static_cast<double>(fiducials_robot_m.cols());
+      tilt_sq_m2 = n * std::max(0.0, expected_tre_squared(fiducials_robot_m, at_m, variance_m2) -
+                                         expected_tre_squared(fiducials_robot_m, centroid_m, variance_m2));
+    }
+    return std::sqrt(sd_edge_m * sd_edge_m + growth_m * growth_m + registration_sq_m2 + tilt_sq_m2);
   }
   Eigen::VectorXd known_squared_m2;
 
