@@ -2,16 +2,13 @@
 // vrreg serve: the correction service (docs/serve.md). Loads fitted models once and answers
 // correction requests from robot programs (line protocol) and cell software (HTTP/JSON).
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <mutex>
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "serve/service.hpp"
 #include "serve/served_model.hpp"
-#include "vrreg/core/file_error.hpp"
-#include "vrreg/io/input_file.hpp"
+#include "serve/token.hpp"
 
 namespace vrreg::cli {
 namespace {
@@ -33,26 +30,13 @@ struct ServeArgs {
   int audit_keep = 5;
 };
 
-// The token's first line; a file keeps it out of the process list and the shell history.
-std::string read_token(const std::string& path) {
-  if (path.empty()) {
-    const char* env = std::getenv("VRREG_SERVE_TOKEN");
-    return env ? env : "";
-  }
-  std::string text = io::read_input_file(path);
-  const std::size_t end = text.find_first_of("\r\n");
-  if (end != std::string::npos) text.resize(end);
-  if (text.empty()) throw FileError(path, 1, "--token-file: the first line holds no token");
-  return text;
-}
-
 void run_serve(const ServeArgs& args) {
   serve::ServeOptions options;
   for (const std::string& m : args.models) options.models.push_back(serve::parse_model_source(m));
   if (!args.listen.empty()) options.line = serve::parse_endpoint(args.listen);
   if (!args.http.empty()) options.http = serve::parse_endpoint(args.http);
   options.allow_remote = args.allow_remote;
-  options.token = read_token(args.token_file);
+  options.token = serve::read_token(args.token_file);
   options.threads = args.threads;
   options.max_connections = args.max_connections;
   options.max_body_bytes = args.max_body_bytes;
@@ -68,6 +52,8 @@ void run_serve(const ServeArgs& args) {
     std::fprintf(stderr, "%s vrreg serve: %s\n", serve::utc_now().c_str(), message.c_str());
     std::fflush(stderr);
   };
+  const std::string line_address = options.line ? options.line->address : "";
+  const std::string http_address = options.http ? options.http->address : "";
   serve::Service service(std::move(options), log);
   for (const auto& m : service.models().all()) {
     const serve::ModelIdentity& id = m->identity();
@@ -75,16 +61,10 @@ void run_serve(const ServeArgs& args) {
         std::to_string(id.n_fiducials) + " fiducials, sha256 " + id.sha256);
   }
   if (service.line_port() != 0) {
-    log("line protocol on " + (args.listen.rfind(':') != std::string::npos
-                                   ? args.listen.substr(0, args.listen.rfind(':'))
-                                   : std::string("127.0.0.1")) +
-        ":" + std::to_string(service.line_port()));
+    log("line protocol on " + line_address + ":" + std::to_string(service.line_port()));
   }
   if (service.http_port() != 0) {
-    log("HTTP on " + (args.http.rfind(':') != std::string::npos
-                          ? args.http.substr(0, args.http.rfind(':'))
-                          : std::string("127.0.0.1")) +
-        ":" + std::to_string(service.http_port()));
+    log("HTTP on " + http_address + ":" + std::to_string(service.http_port()));
   }
   log("ready (SIGHUP reloads the models, SIGINT or SIGTERM stops)");
   service.run_until_signalled();

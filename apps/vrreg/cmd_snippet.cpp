@@ -7,8 +7,8 @@
 #include "command_registry.hpp"
 #include "serve/service.hpp"
 #include "serve/snippets.hpp"
+#include "serve/token.hpp"
 #include "vrreg/io/atomic_write.hpp"
-#include "vrreg/io/input_file.hpp"
 
 namespace vrreg::cli {
 namespace {
@@ -30,11 +30,7 @@ void run_snippet(const SnippetArgs& args) {
   o.host = at.address;
   o.port = at.port;
   o.timeout_s = args.timeout_s;
-  if (!args.token_file.empty()) {
-    std::string text = io::read_input_file(args.token_file);
-    text.resize(std::min(text.size(), text.find_first_of("\r\n")));
-    o.token = text;
-  }
+  if (!args.token_file.empty()) o.token = serve::read_token(args.token_file);
   std::vector<io::OutputFile> outputs;
   if (args.language == "urscript") {
     if (!args.eki_config.empty()) throw InputError("--eki-config: for krl only");

@@ -50,24 +50,15 @@ Response correct(Service::Impl& service, const Request& request, const std::stri
     return reply(request, http_status(refused->code), answer_json(*refused, nullptr));
   }
   const HttpCorrectRequest& r = std::get<HttpCorrectRequest>(parsed);
-  // A batch is answered by one model, the one current when it starts.
-  std::shared_ptr<const ServedModel> model = service.registry.find(r.points.front().model);
-  if (!r.batch || !model) {
-    std::shared_ptr<const ServedModel> used;
-    const PointAnswer a = service.answer(r.points.front(), client, "http", &used);
-    if (r.batch) return reply(request, http_status(a.code), answer_json(a, nullptr));
-    return reply(request, http_status(a.code), answer_json(a, used ? &used->identity() : nullptr));
-  }
+  // The model current now answers the whole request, even if a reload swaps it meanwhile.
+  const std::shared_ptr<const ServedModel> model = service.registry.find(r.points.front().model);
   std::vector<PointAnswer> answers;
   answers.reserve(r.points.size());
-  for (const PointRequest& p : r.points) {
-    PointAnswer a = model->answer(p);
-    ++service.corrections;
-    if (a.code != ReplyCode::kOk) ++service.refusals;
-    service.audit.record(client, "http", model->identity().name, model->identity().sha256, p, a);
-    answers.push_back(std::move(a));
-  }
-  return reply(request, 200, batch_json(answers, model->identity()));
+  for (const PointRequest& p : r.points) answers.push_back(service.answer(model, p, client, "http"));
+  if (r.batch && model) return reply(request, 200, batch_json(answers, model->identity()));
+  const PointAnswer& a = answers.front();  // one point, or a batch for an unknown model
+  return reply(request, http_status(a.code),
+               answer_json(a, model && !r.batch ? &model->identity() : nullptr));
 }
 
 Response route(Service::Impl& service, const Request& request, const std::string& client) {

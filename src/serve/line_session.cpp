@@ -86,7 +86,8 @@ asio::awaitable<void> line_session(Service::Impl& service, tcp::socket socket) {
         reply = format_line_reply(PointAnswer::refusal(ReplyCode::kUnauthorized, ""));
         close = true;
       } else if (const auto* point = std::get_if<PointRequest>(&request)) {
-        reply = format_line_reply(service.answer(*point, client, "line"));
+        reply = format_line_reply(
+            service.answer(service.registry.find(point->model), *point, client, "line"));
       } else {
         const auto& bad = std::get<BadRequest>(request);
         ++service.refusals;

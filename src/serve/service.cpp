@@ -167,18 +167,16 @@ bool Service::Impl::authorized(const std::string& given) const {
   return options.token.empty() || constant_time_equal(given, options.token);
 }
 
-PointAnswer Service::Impl::answer(const PointRequest& request, const std::string& client,
-                                  const char* protocol, std::shared_ptr<const ServedModel>* used) {
+PointAnswer Service::Impl::answer(const std::shared_ptr<const ServedModel>& model,
+                                  const PointRequest& request, const std::string& client,
+                                  const char* protocol) {
   ++corrections;
-  // The model current now answers the whole request, even if a reload swaps it meanwhile.
-  const std::shared_ptr<const ServedModel> model = registry.find(request.model);
   PointAnswer a = model ? model->answer(request)
                         : PointAnswer::refusal(ReplyCode::kUnknownModel,
                                                "no model named '" + request.model + "' is served");
   if (a.code != ReplyCode::kOk) ++refusals;
   static const std::string kNone = "-";
   audit.record(client, protocol, request.model, model ? model->identity().sha256 : kNone, request, a);
-  if (used) *used = model;
   return a;
 }
 

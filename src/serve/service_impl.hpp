@@ -40,9 +40,9 @@ struct Service::Impl {
   asio::thread_pool reloader{1};  ///< loads models off the threads that answer
   std::vector<std::thread> threads;
 
-  /// Answers one point: finds the model, corrects, counts and audits.
-  PointAnswer answer(const PointRequest& request, const std::string& client, const char* protocol,
-                     std::shared_ptr<const ServedModel>* used = nullptr);
+  /// Answers one point with `model` (null: not served): corrects, counts and audits.
+  PointAnswer answer(const std::shared_ptr<const ServedModel>& model, const PointRequest& request,
+                     const std::string& client, const char* protocol);
   /// Whether `given` is the token (always true when the service has none).
   [[nodiscard]] bool authorized(const std::string& given) const;
 

@@ -52,20 +52,6 @@ ServeOptions local_options(const std::vector<ModelSource>& models) {
   return o;
 }
 
-// What `vrreg correct` writes for the point: the reply line built from its CSV fields.
-std::string expected_reply(const RegistrationModel& model, const Eigen::Vector3d& sensor_mm) {
-  MeasuredPoints p;
-  p.sensor_m.resize(3, 1);
-  for (int a = 0; a < 3; ++a) p.sensor_m(a, 0) = sensor_mm(a) / units::kMillimetresPerMetre;
-  const CorrectResult r = correct(model, p);
-  const TargetCorrection& c = r.correction;
-  if (c.stencils[0].status != StencilStatus::kOk) return "(0,0,0,-3)\n";
-  const auto mm = [](double m) { return format_reply_mm(units::m_to_mm(m)); };
-  const double sd = c.predicted_sd_m.size() > 0 ? c.predicted_sd_m(0) : 0.0;
-  return "(" + mm(c.corrected_robot_m(0, 0)) + "," + mm(c.corrected_robot_m(1, 0)) + "," +
-         mm(c.corrected_robot_m(2, 0)) + "," + mm(sd) + ")\n";
-}
-
 bool is_refusal(const std::string& reply) { return reply.rfind("(0,0,0,-", 0) == 0; }
 
 std::string request_line(const std::string& model, const Eigen::Vector3d& sensor_mm) {

@@ -9,6 +9,8 @@
 #include <string>
 
 #include "io_test_helpers.hpp"
+#include "serve/line_protocol.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/vrreg.hpp"
 
@@ -53,6 +55,22 @@ inline RegistrationModel write_model(const std::string& path, InterpolationMetho
   const RegisterResult r = register_fiducials(lattice_cell(seed), options);
   io::write_model_json(path, r.model);
   return r.model;
+}
+
+/// The reply line the service must send for `sensor_mm`: `vrreg::correct`'s numbers (what the
+/// command writes), formatted as the line protocol formats them.
+inline std::string expected_reply(const RegistrationModel& model, const Eigen::Vector3d& sensor_mm) {
+  MeasuredPoints p;
+  p.sensor_m.resize(3, 1);
+  for (int a = 0; a < 3; ++a) p.sensor_m(a, 0) = sensor_mm(a) / units::kMillimetresPerMetre;
+  const TargetCorrection c = correct(model, p).correction;
+  if (c.stencils[0].status != StencilStatus::kOk) {
+    return format_line_reply(PointAnswer::refusal(ReplyCode::kNotCorrectable, ""));
+  }
+  PointAnswer a;
+  for (int k = 0; k < 3; ++k) a.robot_mm(k) = units::m_to_mm(c.corrected_robot_m(k, 0));
+  a.sd_mm = c.predicted_sd_m.size() > 0 ? units::m_to_mm(c.predicted_sd_m(0)) : 0.0;
+  return format_line_reply(a);
 }
 
 /// A blocking line-protocol client.

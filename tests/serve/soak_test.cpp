@@ -33,18 +33,6 @@ long resident_kib() {
   return resident * (sysconf(_SC_PAGESIZE) / 1024);
 }
 
-std::string reply_for(const RegistrationModel& model, const Eigen::Vector3d& sensor_mm) {
-  MeasuredPoints p;
-  p.sensor_m.resize(3, 1);
-  for (int a = 0; a < 3; ++a) p.sensor_m(a, 0) = sensor_mm(a) / units::kMillimetresPerMetre;
-  const TargetCorrection c = correct(model, p).correction;
-  PointAnswer a;
-  if (c.stencils[0].status != StencilStatus::kOk) return "(0,0,0,-3)\n";
-  for (int k = 0; k < 3; ++k) a.robot_mm(k) = units::m_to_mm(c.corrected_robot_m(k, 0));
-  a.sd_mm = c.predicted_sd_m.size() > 0 ? units::m_to_mm(c.predicted_sd_m(0)) : 0.0;
-  return format_line_reply(a);
-}
-
 TEST(ServiceSoak, NoWrongAnswerNoLostRequestNoGrowthAcrossReloadsAndHostileClients) {
   TempDir dir;
   const std::string path = dir.file("cell.json");
@@ -66,8 +54,8 @@ TEST(ServiceSoak, NoWrongAnswerNoLostRequestNoGrowthAcrossReloadsAndHostileClien
     const Eigen::Vector3d as_sent(std::stod(format_general(p.x(), 17)),
                                   std::stod(format_general(p.y(), 17)),
                                   std::stod(format_general(p.z(), 17)));
-    from_a.push_back(reply_for(a, as_sent));
-    from_b.push_back(reply_for(b, as_sent));
+    from_a.push_back(expected_reply(a, as_sent));
+    from_b.push_back(expected_reply(b, as_sent));
     ASSERT_NE(from_a.back(), from_b.back());
   }
 
