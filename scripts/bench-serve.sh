@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # The correction service under load (docs/serve.md, docs/benchmarks.md), over loopback on this
 # machine: p50 / p99 latency and corrections per second with 1, 16 and 64 clients, on the line
-# protocol and on HTTP, for an A1-size kriging model (tabulated), the simulated A1 cell's kriging
-# model (which keeps its exact form) and its RRBC grid model, beside a minimal Python service
+# protocol and on HTTP, for an A1-size kriging model, the simulated A1 cell's kriging
+# model (tabulated every 5 mm) and its RRBC grid model, beside a minimal Python service
 # wrapping scipy's RBFInterpolator (python/benchmarks/serve_peer.py). Every line-protocol reply of
 # vrreg is checked against `vrreg correct`'s CSV (wrong = 0).
 #   scripts/bench-serve.sh [SECONDS_PER_RUN]        (default 5; needs the release build)
@@ -70,5 +70,5 @@ print(f\"| $1 | $2 | {r['protocol']} | {r['clients']} | {r['per_second']:.0f} | 
 for c in 1 16 64; do run vrreg lattice line 127.0.0.1:$line $c "$work/lattice.txt" "$work/lattice.expect"; done
 for c in 1 16 64; do run vrreg lattice http 127.0.0.1:$http $c "$work/lattice.txt"; done
 for c in 1 16 64; do run vrreg a1g line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-grid.expect"; done
-for c in 1 16; do run vrreg a1k line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-kriging.expect"; done
+for c in 1 16 64; do run vrreg a1k line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-kriging.expect"; done
 for c in 1 16 64; do run "scipy peer" lattice line 127.0.0.1:$peer $c "$work/lattice.txt"; done

@@ -87,6 +87,7 @@ bool FieldTable::lookup(const Eigen::Vector3d& point_m, double tolerance_m,
                        fy * ((1 - fx) * at(0, 1, 0) + fx * at(1, 1, 0))) +
            fz * ((1 - fy) * ((1 - fx) * at(0, 0, 1) + fx * at(1, 0, 1)) +
                  fy * ((1 - fx) * at(0, 1, 1) + fx * at(1, 1, 1)));
+    if (rms_correction_deviation_m > 0.0) sd_m = std::hypot(sd_m, rms_correction_deviation_m);
   }
   return true;
 }
@@ -99,6 +100,8 @@ void FieldTable::save(MethodState& state) const {
   state.put("table.values_m", values);
   state.put("table.max_correction_deviation_m", max_correction_deviation_m);
   state.put("table.max_sd_relative_deviation", max_sd_relative_deviation);
+  state.put("table.rms_correction_deviation_m", rms_correction_deviation_m);
+  state.put("table.min_model_sd_m", min_model_sd_m);
   state.put("table.n_checked", static_cast<double>(n_checked));
 }
 
@@ -111,6 +114,14 @@ FieldTable FieldTable::restore(const MethodState& state) {
   t.values = state.array("table.values_m", 4, t.size());
   t.max_correction_deviation_m = state.number("table.max_correction_deviation_m");
   t.max_sd_relative_deviation = state.number("table.max_sd_relative_deviation");
+  // Models saved before the table recorded its RMS deviation read it as 0 (their tables were
+  // all within 1/4 of the noise of the exact model).
+  if (state.has("table.rms_correction_deviation_m")) {
+    t.rms_correction_deviation_m = state.number("table.rms_correction_deviation_m");
+    t.min_model_sd_m = state.number("table.min_model_sd_m");
+  }
+  VRREG_THROW_UNLESS(std::isfinite(t.rms_correction_deviation_m) && t.rms_correction_deviation_m >= 0.0,
+                     "the saved field table has a bad RMS deviation");
   t.n_checked = static_cast<Eigen::Index>(state.integer("table.n_checked", 0, 1LL << 40));
   return t;
 }

@@ -2,7 +2,8 @@
 #pragma once
 // Internal to correction: a fitted correction field sampled on a regular lattice over its
 // support box and read back by tricubic (Catmull-Rom) interpolation of the correction and
-// trilinear interpolation of the predicted sd: microseconds per point where the exact model
+// trilinear interpolation of the predicted sd (with the table's own RMS deviation in
+// quadrature): microseconds per point where the exact model
 // (kriging's posterior sd: O(J^2) per point) takes milliseconds. Catmull-Rom reproduces
 // quadratic fields exactly; the deviation from the exact model is measured when the table is
 // built and stated with it.
@@ -27,6 +28,11 @@ struct FieldTable {
   /// Measured against the exact model at check points inside the support box [m, relative].
   double max_correction_deviation_m = 0.0;
   double max_sd_relative_deviation = 0.0;
+  /// RMS over the check points of the 3D correction deviation [m]: added in quadrature to every
+  /// sd the table answers, since a target meets the table's deviation as one more error source.
+  double rms_correction_deviation_m = 0.0;
+  /// The smallest sd of the exact model at the check points [m] (0 without an sd).
+  double min_model_sd_m = 0.0;
   Eigen::Index n_checked = 0;
 
   /// The lattice of spacing `spacing_m` whose Catmull-Rom stencils cover [lo, hi] (one node

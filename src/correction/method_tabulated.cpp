@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "method_support.hpp"
@@ -29,6 +30,10 @@ constexpr double kDeviationPerNoise = 0.05;
 constexpr double kDefaultDeviationM = 1e-6;
 // How far beyond the target a table may deviate and still be used (5 x 1/20 of the noise).
 constexpr double kAcceptFactor = 5.0;
+// The largest table deviation accepted against the model's smallest sd: sqrt(1 + 1/9) = 1.054.
+constexpr double kSdFraction = 1.0 / 3.0;
+// ... and the largest relative deviation of its sd from the model's (trilinear between nodes).
+constexpr double kSdRelativeDeviation = 0.25;
 constexpr Eigen::Index kMaxNodes = Eigen::Index{1} << 21;
 constexpr Eigen::Index kCheckPoints = 2000;
 constexpr Eigen::Index kBlock = 256;
@@ -70,15 +75,22 @@ void check(FieldTable& t, const ExactField& exact) {
   exact(at, c, s);
   t.max_correction_deviation_m = 0.0;
   t.max_sd_relative_deviation = 0.0;
+  t.rms_correction_deviation_m = 0.0;  // the lookups below compare the table's own sd
+  t.min_model_sd_m = t.has_sd ? std::numeric_limits<double>::infinity() : 0.0;
+  double sum_squares = 0.0;
   for (Eigen::Index i = 0; i < kCheckPoints; ++i) {
     Eigen::Vector3d tc;
     double ts = 0.0;
     (void)t.lookup(at.col(i), 0.0, tc, ts);
-    t.max_correction_deviation_m = std::max(t.max_correction_deviation_m, (tc - c.col(i)).norm());
+    const double deviation = (tc - c.col(i)).norm();
+    t.max_correction_deviation_m = std::max(t.max_correction_deviation_m, deviation);
+    sum_squares += deviation * deviation;
+    if (t.has_sd) t.min_model_sd_m = std::min(t.min_model_sd_m, s(i));
     if (t.has_sd && s(i) > 0.0) {
       t.max_sd_relative_deviation = std::max(t.max_sd_relative_deviation, std::abs(ts - s(i)) / s(i));
     }
   }
+  t.rms_correction_deviation_m = std::sqrt(sum_squares / static_cast<double>(kCheckPoints));
   t.n_checked = kCheckPoints;
 }
 
@@ -98,7 +110,9 @@ class TabulatedMethod final : public FittedMethod {
     out << exact_description_ << "; tabulated every " << units::m_to_mm(table_.spacing_m)
         << " mm (" << table_.nodes[0] << " x " << table_.nodes[1] << " x " << table_.nodes[2]
         << " nodes), within " << table_.max_correction_deviation_m * 1e6
-        << " um of the model";
+        << " um of the model (RMS " << table_.rms_correction_deviation_m * 1e6 << " um";
+    if (table_.has_sd) out << ", in the sd";
+    out << ")";
     if (table_.has_sd) out << " and its sd within " << table_.max_sd_relative_deviation * 100 << " %";
     out << " (" << table_.n_checked << " points checked)";
     return out.str();
@@ -173,10 +187,17 @@ std::optional<FieldTable> build_field_table(const ExactField& exact, const Const
     check(finer, exact);
     t = std::move(finer);
   }
-  // A model rougher than its table even after refining (length scales below the fiducials'
-  // spacing) keeps its exact form: a table that moved a correction by more than a quarter of
-  // the noise would change the answer, not only its speed.
-  if (t.max_correction_deviation_m > kAcceptFactor * target_m) return std::nullopt;
+  // A table within a quarter of the noise answers as the exact model does. A rougher one (length
+  // scales below the fiducials' spacing, e.g. a harmonic drive's period seen through an aliasing
+  // layout) is still used when the model states an sd, the table's largest deviation stays
+  // below a third of the smallest sd and its sd within 25 % of the model's: its RMS deviation then enters every sd in quadrature, so a
+  // stated sd grows by at most 5 % while a correction costs microseconds instead of the exact
+  // posterior's milliseconds. Otherwise the exact form is kept.
+  const bool within_noise = t.max_correction_deviation_m <= kAcceptFactor * target_m;
+  const bool within_sd = t.has_sd &&
+                         t.max_correction_deviation_m <= kSdFraction * t.min_model_sd_m &&
+                         t.max_sd_relative_deviation <= kSdRelativeDeviation;
+  if (!within_noise && !within_sd) return std::nullopt;
   return t;
 }
 

@@ -32,8 +32,10 @@ struct CorrectorOptions {
   int cv_folds = 5;           ///< cross-validation of `auto` and of the field models' sd
   std::uint64_t cv_seed = 1;  ///< of the shuffle that deals fiducials to folds
   /// Kriging and RBF correct from a table of the fitted field (tricubic, its deviation from the
-  /// exact model measured and stated in describe(): within 1/20 of the fiducials' noise):
-  /// microseconds a point where kriging's exact sd costs milliseconds. Off: the exact model.
+  /// exact model measured and stated in describe(): within a quarter of the fiducials' noise,
+  /// or, for a rougher field, a third of the model's smallest sd with the RMS deviation added
+  /// to every sd): microseconds a point where kriging's exact sd costs milliseconds. Off: the
+  /// exact model.
   bool tabulate = true;
   /// Throws InputError on settings that cannot work (octuplet without a cube edge, folds < 2).
   void validate() const;
