@@ -126,6 +126,8 @@ class KrigingMethod final : public FittedMethod {
   SupportBox support_;
 };
 
+constexpr Eigen::Index kLargeCellFitSubset = 300;
+
 KrigingOptions options_for(const CorrectorData& data) {
   KrigingOptions options;
   // The nugget is at least the fiducials' known noise: a field fitted through the noise would
@@ -135,6 +137,10 @@ KrigingOptions options_for(const CorrectorData& data) {
   // extrapolate wildly at the layout's edge (27 fiducials of A1: 0.92 mm with degree 2,
   // 0.27 mm with degree 0, octuplet RRBC 0.27 mm).
   options.trend_degree = data.size() >= 100 ? 2 : data.size() >= 40 ? 1 : 0;
+  // A large cell, whose local models use 150 neighbours, fits its hyperparameters on 300
+  // fiducials instead of 500: the REML fit is O(n^3) per step and was 4.3 s of the 9.5 s (CPU)
+  // register of 10^5 fiducials (docs/benchmarks.md, "Large cells").
+  if (data.size() > kLargeCellFiducials) options.fit_subset = kLargeCellFitSubset;
   return options;
 }
 

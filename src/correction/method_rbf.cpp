@@ -57,10 +57,18 @@ std::string rbf_unavailable(const CorrectorData& data, const MethodSettings&) {
   return why.empty() ? coincidence_unavailable(data, "rbf") : why;
 }
 
+// A large cell chooses its smoothing on 1 000 fiducials instead of 1 500: the eigendecomposition
+// was 2.9 s of the 8.5 s (CPU) register of 10^5 fiducials, and the 1 000 nearest the centroid
+// have the same density, so the same smoothing (docs/benchmarks.md, "Large cells").
+constexpr Eigen::Index kLargeCellSmoothingBlock = 1000;
+
 FitOutcome fit_rbf(const CorrectorData& data, const MethodSettings& /*settings*/) {
   const Eigen::Matrix3d& R = data.T_robot_sensor.rotation;
-  return fitted<RbfMethod>(RbfModel::fit(data.fiducials_robot_m, R * data.corrections_sensor_m),
-                           field_support(data.fiducials_robot_m), R);
+  RbfOptions options;
+  if (data.size() > kLargeCellFiducials) options.smoothing_block = kLargeCellSmoothingBlock;
+  return fitted<RbfMethod>(
+      RbfModel::fit(data.fiducials_robot_m, R * data.corrections_sensor_m, options),
+      field_support(data.fiducials_robot_m), R);
 }
 
 FitOutcome RbfMethod::refit(const CorrectorData& subset, const MethodSettings& settings) const {

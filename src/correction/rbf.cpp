@@ -33,9 +33,10 @@ void validate(const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_
   VRREG_THROW_UNLESS(positions_m.allFinite() && values_m.allFinite(),
                      "rbf: non-finite fiducial position or value");
   VRREG_THROW_UNLESS(options.exact_limit > terms && options.local_neighbours > terms &&
+                         (options.smoothing_block == 0 || options.smoothing_block > terms) &&
                          options.n_smoothing >= 1 &&
                          options.min_log10_smoothing <= options.max_log10_smoothing,
-                     "rbf: exact_limit and local_neighbours must exceed "
+                     "rbf: exact_limit, local_neighbours and smoothing_block (unless 0) must exceed "
                          << terms << ", n_smoothing >= 1, min <= max smoothing exponent");
   VRREG_THROW_UNLESS(!options.smoothing || (options.smoothing->allFinite() &&
                                             (options.smoothing->array() >= 0.0).all()),
@@ -84,12 +85,14 @@ RbfModel RbfModel::fit(const ConstPoints3Ref& positions_m, const ConstPoints3Ref
     return RbfModel(std::move(impl));
   }
   // The smoothing is chosen on all fiducials, or above exact_limit on the block of the
-  // exact_limit fiducials nearest the centroid (same density, so lambda transfers).
+  // smoothing_block fiducials nearest the centroid (same density, so lambda transfers).
   Points3 block = positions_m;
   Points3 block_values = values_m;
   if (!impl->exact()) {
+    const Eigen::Index block_size =
+        options.smoothing_block > 0 ? options.smoothing_block : options.exact_limit;
     const std::vector<Eigen::Index> near = impl->index->nearest_k(
-        positions_m.rowwise().mean(), static_cast<std::size_t>(options.exact_limit));
+        positions_m.rowwise().mean(), static_cast<std::size_t>(block_size));
     block.resize(3, static_cast<Eigen::Index>(near.size()));
     block_values.resize(3, block.cols());
     for (Eigen::Index k = 0; k < block.cols(); ++k) {

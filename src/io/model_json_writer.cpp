@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/progress.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/model_json.hpp"
@@ -138,7 +140,12 @@ std::string format_model_json(const RegistrationModel& model) {
 }
 
 void write_model_json(const std::string& path, const RegistrationModel& model) {
-  write_file_atomically(path, format_model_json(model));
+  // A large cell's model (10^6 fiducials) takes seconds to format and write.
+  ProgressStage progress("writing " + std::filesystem::path(path).filename().string(), 2);
+  const std::string text = format_model_json(model);
+  progress.advance();
+  write_file_atomically(path, text);
+  progress.advance();
 }
 
 }  // namespace vrreg::io

@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/progress.hpp"
 #include "vrreg/core/random.hpp"
 
 namespace vrreg {
@@ -51,11 +53,13 @@ void check_sample_input(const ConstPoints3Ref& x, const ConstPoints3Ref& y, std:
 
 // Reduces add(acc, L) over `pairs` pairs (i != j) drawn uniformly with `seed`: the same pairs for
 // the statistics and the histogram, in fixed chunks reduced in a fixed order.
+// 10^7 pairs take about a second: each chunk is a step of the progress.
 template <class Acc, class Add, class Combine>
 Acc reduce_sampled_pairs(const ConstPoints3Ref& x, const ConstPoints3Ref& y, std::int64_t pairs,
                          std::uint64_t seed, const Acc& empty, Add add, Combine combine) {
   const auto j = static_cast<std::uint64_t>(x.cols());
   const std::int64_t chunks = (pairs + kChunkPairs - 1) / kChunkPairs;
+  ProgressStage progress("sigma_L over " + std::to_string(pairs) + " sampled pairs", chunks);
   return tbb::parallel_deterministic_reduce(
       tbb::blocked_range<std::int64_t>(0, chunks, 1), empty,
       [&](const tbb::blocked_range<std::int64_t>& range, Acc acc) {
@@ -69,6 +73,7 @@ Acc reduce_sampled_pairs(const ConstPoints3Ref& x, const ConstPoints3Ref& y, std
             if (b >= a) ++b;
             add(acc, pair_l(x, y, static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)));
           }
+          progress.advance();
         }
         return acc;
       },

@@ -135,7 +135,13 @@ RegisterResult register_on_offset(const MeasurementSet& fiducials, const MarkerO
     }
     moved.locations = std::move(kept);
   }
-  RegisterResult out = register_fiducials(moved, options);
+  // The model keeps the arm up to the marker (whatever tool a robot in `options` had): the
+  // positions are the marker's, so the joint model and `auto` use that chain, and evaluate and
+  // correct never ask for the robot again.
+  RegisterOptions with_robot = options;
+  with_robot.robot = offset.flange_chain.with_tool(
+      Eigen::Isometry3d(Eigen::Translation3d(offset.p_flange_marker_m)));
+  RegisterResult out = register_fiducials(moved, with_robot);
   out.model.marker_offset = offset;
   return out;
 }

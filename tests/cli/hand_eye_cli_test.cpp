@@ -66,6 +66,14 @@ TEST_F(HandEyeCli, PlanSimulateRegisterEvaluateExport) {
   const json e = json::parse(eval.out);
   EXPECT_EQ(e["n_targets"].get<int>(), 6);
   EXPECT_LT(e["cor_rms_t_mm"].get<double>(), 0.5);
+  // The model kept the arm to its marker: auto (the joint model among its candidates) needs no
+  // --robot.
+  const CliResult automatic = run_vrreg("evaluate --model " + p("model.json") + " --targets " +
+                                        p("cell.csv") + " --interpolation auto --json");
+  ASSERT_EQ(automatic.status, 0) << automatic.err;
+  const json a = json::parse(automatic.out);
+  ASSERT_TRUE(a.contains("cross_validation")) << automatic.out;
+  EXPECT_NE(a["cross_validation"].dump().find("joint"), std::string::npos) << automatic.out;
 
   const CliResult yaml = run_vrreg("export --model " + p("model.json") + " --format yaml");
   ASSERT_EQ(yaml.status, 0) << yaml.err;

@@ -110,6 +110,11 @@ TEST(Rbf, SmoothsNoiseAndLocalIsCloseToGlobal) {
   const Points3 query = uniform_box(rng, 30, 0.18);
   const Points3 diff = local.predict(query).mean_m - global.predict(query).mean_m;
   EXPECT_LT(std::sqrt(diff.squaredNorm() / 90.0), 0.15 * 2e-5);
+  // The smoothing chosen on a smaller block of the same density predicts as closely.
+  local_options.smoothing_block = 120;
+  const RbfModel small_block = RbfModel::fit(p, noisy, local_options);
+  const Points3 diff_small = small_block.predict(query).mean_m - global.predict(query).mean_m;
+  EXPECT_LT(std::sqrt(diff_small.squaredNorm() / 90.0), 0.15 * 2e-5);
 }
 
 TEST(Rbf, RejectsDegenerateInput) {
@@ -129,6 +134,9 @@ TEST(Rbf, RejectsDegenerateInput) {
   Points3 bad = values;
   bad(0, 0) = std::nan("");
   EXPECT_THROW((void)RbfModel::fit(p, bad), InputError);
+  RbfOptions tiny_block;
+  tiny_block.smoothing_block = 4;  // not more than degree 1's 4 terms
+  EXPECT_THROW((void)RbfModel::fit(p, values, tiny_block), InputError);
 }
 
 }  // namespace

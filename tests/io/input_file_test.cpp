@@ -67,5 +67,13 @@ TEST_F(InputFile, RegularFileAndSymlinkToOneAreRead) {
                                 0, "cannot open: No such file or directory"));
 }
 
+TEST_F(InputFile, EveryByteOfALargeOrEmptyFileIsRead) {
+  TempDir dir;
+  std::string bytes;
+  for (int i = 0; i < 200001; ++i) bytes.push_back(static_cast<char>((i * 7919) % 256));
+  EXPECT_EQ(read_input_file(dir.write("big.bin", bytes)), bytes);
+  EXPECT_EQ(read_input_file(dir.write("empty.txt", "")), "");
+}
+
 }  // namespace
 }  // namespace vrreg::io

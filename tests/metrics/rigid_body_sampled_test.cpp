@@ -6,8 +6,11 @@
 
 #include <cmath>
 #include <cstring>
+#include <mutex>
+#include <string>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/progress.hpp"
 #include "vrreg_test.hpp"
 
 namespace vrreg {
@@ -121,6 +124,26 @@ TEST(RigidBodySampled, BadInputThrows) {
   SigmaLOptions options;
   options.sample_pairs = 0;
   EXPECT_THROW(rigid_body_estimate(c.sensor, c.robot, options), InputError);
+}
+
+// Sampling 10^7 pairs takes a second: it reports progress, one step per chunk, to its end.
+TEST(RigidBodySampled, ReportsProgressToItsEnd) {
+  const Cell c = cell(300, 4);
+  std::mutex mutex;
+  std::int64_t last_done = -1;
+  std::int64_t last_total = -2;
+  std::string name;
+  set_progress_sink([&](std::string_view stage, std::int64_t done, std::int64_t total, double) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    name = stage;
+    last_done = std::max(last_done, done);
+    last_total = total;
+  });
+  (void)rigid_body_statistics_sampled(c.sensor, c.robot, 300001, 9);
+  set_progress_sink({});
+  EXPECT_EQ(name, "sigma_L over 300001 sampled pairs");
+  EXPECT_GT(last_total, 1);
+  EXPECT_EQ(last_done, last_total);
 }
 
 }  // namespace

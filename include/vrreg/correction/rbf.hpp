@@ -18,10 +18,13 @@ struct RbfOptions {
   /// Polynomial degree 1 or 2 (4 or 10 terms). The cubic kernel r^3 needs at least degree 1.
   int polynomial_degree = 1;
   /// Up to this many fiducials one global model (smoothing from its exact LOO); above it the
-  /// smoothing is chosen on the `exact_limit` fiducials nearest the centroid and each query is
+  /// smoothing is chosen on the `smoothing_block` fiducials nearest the centroid and each query is
   /// predicted from its `local_neighbours` nearest fiducials.
   Eigen::Index exact_limit = 1500;
   Eigen::Index local_neighbours = 150;
+  /// Above exact_limit, the smoothing is chosen on this many fiducials nearest the centroid
+  /// (0: exact_limit). Its eigendecomposition is O(n^3).
+  Eigen::Index smoothing_block = 0;
   /// Smoothing values tried: lambda = scale * 10^k for k on a grid from min to max exponent,
   /// scale the mean eigenvalue of the kernel matrix on the polynomial's null space.
   double min_log10_smoothing = -9.0;
