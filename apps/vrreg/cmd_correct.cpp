@@ -62,9 +62,9 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   print_predicted_sd(c, std::nullopt);
   if (c.n_flagged > 0) {
     std::printf(
-        "  not correctable               %d points (outside the fiducials; status column "
-        "says why; robot_* holds the uncorrected mapping)\n",
-        c.n_flagged);
+        "  not correctable               %d points (%s; status column says why; robot_* holds "
+        "the uncorrected mapping)\n",
+        c.n_flagged, why_not_correctable(c));
   }
   std::printf("  robot-frame positions (mm) written to %s\n", args.output.c_str());
 }

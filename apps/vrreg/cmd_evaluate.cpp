@@ -88,8 +88,8 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
               c.layout.c_str());
   if (c.n_flagged > 0) {
     std::printf(
-        "  not correctable               %d targets (outside the fiducials; left uncorrected)\n",
-        c.n_flagged);
+        "  not correctable               %d targets (%s; left uncorrected)\n", c.n_flagged,
+        why_not_correctable(c));
   }
   std::printf("                                uncorrected  corrected (%s)\n",
               is_field_model(c.method_used) ? to_string(c.method_used) : "RRBC");

@@ -89,4 +89,9 @@ void add_predicted_sd_json(const TargetCorrection& c,
   }
 }
 
+const char* why_not_correctable(const TargetCorrection& c) {
+  const bool none = !c.stencils.empty() && c.stencils.front().status == StencilStatus::kTooFewFiducials;
+  return none ? "too few fiducials" : "outside the fiducials";
+}
+
 }  // namespace vrreg::cli

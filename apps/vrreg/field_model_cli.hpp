@@ -24,4 +24,8 @@ void add_predicted_sd_json(const TargetCorrection& c,
                            const std::optional<UncertaintyCalibration>& calibration,
                            nlohmann::json& j);
 
+/// Why the flagged points of `c` were not corrected, for evaluate's and correct's summary:
+/// "too few fiducials" when none could be, else "outside the fiducials".
+const char* why_not_correctable(const TargetCorrection& c);
+
 }  // namespace vrreg::cli

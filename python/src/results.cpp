@@ -158,7 +158,8 @@ void bind_results(py::module_& m) {
       .value("OUTSIDE_HULL", StencilStatus::kOutsideHull)
       .value("MISSING_CORNER", StencilStatus::kMissingCorner)
       .value("OUTSIDE_SUPPORT", StencilStatus::kOutsideSupport)
-      .value("EXTRAPOLATED", StencilStatus::kExtrapolated);
+      .value("EXTRAPOLATED", StencilStatus::kExtrapolated)
+      .value("TOO_FEW_FIDUCIALS", StencilStatus::kTooFewFiducials);
 
   py::class_<RegisterResult> reg(m, "RegisterResult", "What register found; lengths in metres.");
   reg.def_property_readonly(

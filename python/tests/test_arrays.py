@@ -150,3 +150,16 @@ def test_far_points_are_outside_support_unless_extrapolate_is_asked():
     assert far.status[1] == int(vrreg.StencilStatus.EXTRAPOLATED) and far.n_flagged == 0
     assert far.predicted_sd[1] > far.predicted_sd[0] > 0
     assert np.array_equal(far.corrected[0], plain.corrected[0])
+
+
+def test_three_fiducials_correct_nothing_and_say_why():
+    robot = np.array([[0.4, 0.0, 0.2], [0.5, 0.0, 0.2], [0.4, 0.1, 0.25]])
+    sensor = robot + [0.1, 0.2, 0.3] + [[1e-4, 0, 0], [0, -1e-4, 0], [0, 0, 2e-4]]
+    model = vrreg.register(sensor, robot).model
+    points = sensor[:2] + 0.01
+    result = vrreg.correct(model, points)
+    assert list(result.status) == [int(vrreg.StencilStatus.TOO_FEW_FIDUCIALS)] * 2
+    assert list(result.status_names) == ["too few fiducials"] * 2
+    assert result.n_flagged == 2
+    np.testing.assert_array_equal(result.corrected, result.uncorrected)
+    assert "fewer than any correction method needs" in result.layout

@@ -32,6 +32,7 @@ class StencilStatus:
     MISSING_CORNER: StencilStatus
     OUTSIDE_SUPPORT: StencilStatus
     EXTRAPOLATED: StencilStatus
+    TOO_FEW_FIDUCIALS: StencilStatus
     __members__: ClassVar[dict[str, StencilStatus]]
     def __init__(self, value: int) -> None: ...
     def __int__(self) -> int: ...

@@ -44,6 +44,8 @@ const char* to_string(StencilStatus status) {
       return "outside support";
     case StencilStatus::kExtrapolated:
       return "extrapolated";
+    case StencilStatus::kTooFewFiducials:
+      return "too few fiducials";
   }
   return "unknown";
 }

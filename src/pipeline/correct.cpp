@@ -49,7 +49,9 @@ CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& 
 
 
 bool corrects_point_by_point(const RegistrationModel& model, const CorrectOptions& options) {
-  return model.procedure2.strategy != Strategy::kAlongPath &&
+  // Too few fiducials: the set's way flags every point, naming the minimum.
+  return model.fiducials.size() >= pipeline_detail::kMinCorrectableFiducials &&
+         model.procedure2.strategy != Strategy::kAlongPath &&
          model.procedure2.strategy != Strategy::kVolumeCorners && !options.config &&
          !model.config && !model.marker_offset;
 }

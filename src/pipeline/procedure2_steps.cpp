@@ -89,6 +89,33 @@ RegistrationModel volume_corner_model(const MeasurementSet& set, const planning:
   return model;
 }
 
+namespace {
+
+// A cell of fewer fiducials than any method needs: every target keeps its uncorrected mapping
+// (Eq. 2), flagged, and the layout says which method needs how many.
+TargetCorrection uncorrected(const RegistrationModel& model, const MeasurementSet& set,
+                             const std::vector<std::size_t>& rows, InterpolationMethod asked) {
+  TargetCorrection out;
+  out.method_used = asked == InterpolationMethod::kAuto ? InterpolationMethod::kLinear : asked;
+  out.layout = "none: " + std::to_string(model.fiducials.size()) +
+               " fiducials are fewer than any correction method needs (scattered and linear 4, "
+               "grid, trilinear and octuplet 8, kriging, rbf and joint 12 or more); every "
+               "target is left uncorrected";
+  const Points3 sensor_m = set.sensor_points(rows);
+  const auto n = static_cast<std::size_t>(sensor_m.cols());
+  Stencil flagged;
+  flagged.status = StencilStatus::kTooFewFiducials;
+  out.stencils.assign(n, flagged);
+  out.corrections_sensor_m = Points3::Zero(3, sensor_m.cols());
+  out.corrected_sensor_m = sensor_m;
+  out.uncorrected_robot_m = model.T_robot_sensor.apply_all(sensor_m);
+  out.corrected_robot_m = out.uncorrected_robot_m;
+  out.n_flagged = static_cast<int>(n);
+  return out;
+}
+
+}  // namespace
+
 TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
                               const std::vector<std::size_t>& rows,
                               const CorrectorRequest& request, const Points3& nominal_robot_m,
@@ -101,6 +128,11 @@ TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementS
       fail(set, std::string("--strategy 3 corrects with octuplets, not --interpolation ") +
                     to_string(settings.method));
     }
+  }
+  if (model.fiducials.size() < kMinCorrectableFiducials &&
+      (request.strategy == planning::Strategy::kNone ||
+       request.strategy == planning::Strategy::kAsListed)) {
+    return uncorrected(model, set, rows, settings.method);
   }
   const bool field = is_field_model(settings.method);
   if (field && request.strategy == planning::Strategy::kAlongPath) {

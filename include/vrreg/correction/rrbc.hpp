@@ -27,6 +27,8 @@ enum class StencilStatus {
   /// Outside the support, corrected anyway because the caller asked (extrapolate): the
   /// correction at the nearest point of the support, its sd widened for the distance.
   kExtrapolated,
+  /// Fewer fiducials than any correction method needs (scattered's 4): uncorrected.
+  kTooFewFiducials,
 };
 
 /// The fiducials and weights that carry corrections to one target (Eq. 7): sum of weights = 1.
