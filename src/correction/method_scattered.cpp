@@ -155,7 +155,7 @@ class ScatteredMethod final : public FittedMethod {
 // all in a plane.
 std::string scattered_unavailable(const CorrectorData& data, const MethodSettings& settings) {
   const Eigen::Index n = data.size();
-  if (n < 4) {
+  if (n < kMinCorrectableFiducials) {
     return "scattered interpolation needs at least 4 fiducials, got " + std::to_string(n);
   }
   const PointIndex index(data.fiducials_robot_m);

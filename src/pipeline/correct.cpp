@@ -50,7 +50,7 @@ CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& 
 
 bool corrects_point_by_point(const RegistrationModel& model, const CorrectOptions& options) {
   // Too few fiducials: the set's way flags every point, naming the minimum.
-  return model.fiducials.size() >= pipeline_detail::kMinCorrectableFiducials &&
+  return std::ssize(model.fiducials) >= kMinCorrectableFiducials &&
          model.procedure2.strategy != Strategy::kAlongPath &&
          model.procedure2.strategy != Strategy::kVolumeCorners && !options.config &&
          !model.config && !model.marker_offset;

@@ -98,6 +98,12 @@ MeasurementSet with_marker_offset(const RegistrationModel& model, const Measurem
 
 namespace {
 
+// The arm up to the marker: the flange chain with the marker offset as its tool.
+kinematics::SerialChain chain_to_marker(const kinematics::SerialChain& flange_chain,
+                                        const Eigen::Vector3d& p_flange_marker_m) {
+  return flange_chain.with_tool(Eigen::Isometry3d(Eigen::Translation3d(p_flange_marker_m)));
+}
+
 // The fiducial rows' flange poses (FK of the robot without its tool).
 std::vector<Eigen::Isometry3d> flange_poses(const MeasurementSet& fiducials,
                                             const kinematics::SerialChain& flange_chain,
@@ -139,8 +145,7 @@ RegisterResult register_on_offset(const MeasurementSet& fiducials, const MarkerO
   // positions are the marker's, so the joint model and `auto` use that chain, and evaluate and
   // correct never ask for the robot again.
   RegisterOptions with_robot = options;
-  with_robot.robot = offset.flange_chain.with_tool(
-      Eigen::Isometry3d(Eigen::Translation3d(offset.p_flange_marker_m)));
+  with_robot.robot = chain_to_marker(offset.flange_chain, offset.p_flange_marker_m);
   RegisterResult out = register_fiducials(moved, with_robot);
   out.model.marker_offset = offset;
   return out;
@@ -157,8 +162,7 @@ Eigen::Vector3d joint_offset_std(const MarkerOffsetResult& e,
   if (sigma_rad == 0.0) return Eigen::Vector3d::Zero();
   const auto n = static_cast<Eigen::Index>(rows.size());
   const int n_joints = flange_chain.n_joints();
-  const kinematics::SerialChain marker_chain =
-      flange_chain.with_tool(Eigen::Isometry3d(Eigen::Translation3d(e.p_flange_marker_m)));
+  const kinematics::SerialChain marker_chain = chain_to_marker(flange_chain, e.p_flange_marker_m);
   Eigen::MatrixXd jac(3 * n, 9);
   Eigen::MatrixXd g(3 * n, n_joints);
   for (Eigen::Index j = 0; j < n; ++j) {

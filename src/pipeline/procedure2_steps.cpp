@@ -129,7 +129,7 @@ TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementS
                     to_string(settings.method));
     }
   }
-  if (model.fiducials.size() < kMinCorrectableFiducials &&
+  if (std::ssize(model.fiducials) < kMinCorrectableFiducials &&
       (request.strategy == planning::Strategy::kNone ||
        request.strategy == planning::Strategy::kAsListed)) {
     return uncorrected(model, set, rows, settings.method);

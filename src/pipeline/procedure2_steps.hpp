@@ -17,10 +17,6 @@
 
 namespace vrreg::pipeline_detail {
 
-/// Scattered interpolation's 4 fiducials: the fewest any method needs. A model of fewer corrects
-/// nothing: every point keeps its uncorrected mapping with status "too few fiducials".
-inline constexpr std::size_t kMinCorrectableFiducials = 4;
-
 /// Throws naming `set.source` unless it has configuration labels and joints.
 void require_configurations(const MeasurementSet& set, planning::Strategy strategy);
 

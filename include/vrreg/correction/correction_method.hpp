@@ -22,6 +22,10 @@
 
 namespace vrreg {
 
+/// The fewest fiducials any method corrects from (scattered's tetrahedron): with fewer, every
+/// method refuses to fit, and the pipeline leaves every point uncorrected ("too few fiducials").
+inline constexpr Eigen::Index kMinCorrectableFiducials = 4;
+
 /// What a method needs of each point besides its sensor reading.
 struct MethodNeeds {
   bool nominal_robot = false;  ///< the nominal (commanded) robot position: octuplet, Strategy 3
