@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "option_flags.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 
@@ -76,6 +77,7 @@ CLI::Validator non_negative_seed() {
           ""};
 }
 
-void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
+// Library text in a result (layouts, notes) names options as `name`: here, the flags.
+void print_json(const nlohmann::json& j) { std::cout << with_flags(j.dump(2)) << "\n"; }
 
 }  // namespace vrreg::cli

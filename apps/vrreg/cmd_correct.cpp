@@ -10,6 +10,7 @@
 #include "robot_cli.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 #include "vrreg/io/model_json.hpp"
+#include "vrreg/io/result_json.hpp"
 #include "vrreg/io/results_csv.hpp"
 #include "vrreg/vrreg.hpp"
 
@@ -43,14 +44,8 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   const std::size_t n_points = r.names.size();
 
   if (args.json) {
-    nlohmann::json j;
-    j["points"] = n_points;
-    j["n_flagged"] = c.n_flagged;
-    j["interpolation"] = to_string(c.method_used);
-    j["layout"] = c.layout;
+    nlohmann::json j = io::correct_json(r);
     j["output"] = args.output;
-    add_predicted_sd_json(c, std::nullopt, j);
-    if (r.cross_validation) j["cross_validation"] = cross_validation_json(*r.cross_validation);
     print_json(j);
     return;
   }

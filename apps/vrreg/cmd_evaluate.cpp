@@ -13,6 +13,7 @@
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 #include "vrreg/io/model_json.hpp"
+#include "vrreg/io/result_json.hpp"
 #include "vrreg/io/results_csv.hpp"
 #include "vrreg/vrreg.hpp"
 
@@ -42,8 +43,6 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   const EvaluateResult r = evaluate(model, read_measurements(args.targets), options);
   const ImprovementSummary& s = r.summary;
   const TargetCorrection& c = r.correction;
-  const Eigen::VectorXd& unc = r.unc_tre_m;
-  const Eigen::VectorXd& cor = r.cor_tre_m;
   const std::optional<int>& config = r.config;
   const std::vector<std::string>& bad = r.bad_targets;
   const std::optional<planning::Strategy2Summary>& relabelled = r.relabelled;
@@ -51,35 +50,13 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   if (!args.per_target.empty()) io::write_per_target_csv(args.per_target, r);
 
   if (args.json) {
-    nlohmann::json j;
+    nlohmann::json j = io::evaluate_json(r, model);
     j["model"] = args.model;
     j["targets"] = args.targets;
-    j["config"] = config ? nlohmann::json(*config) : nlohmann::json(nullptr);
-    j["interpolation"] = to_string(c.method_used);
-    j["layout"] = c.layout;
-    if (c.method_used == InterpolationMethod::kOctuplet) {
-      j["cube_mm"] = units::m_to_mm(r.interpolation.cube_edge_m);
-    }
-    j["n_targets"] = s.n_targets;
-    j["n_flagged"] = c.n_flagged;
-    j["unc_rms_t_mm"] = units::m_to_mm(s.unc_rms_t_m);
-    j["cor_rms_t_mm"] = units::m_to_mm(s.cor_rms_t_m);
-    j["gamma_percent"] = 100.0 * s.gamma;
-    j["n_bad"] = s.n_bad;
-    j["bad_targets"] = bad;
-    j["unc_max_tre_mm"] = units::m_to_mm(unc.size() ? unc.maxCoeff() : 0.0);
-    j["cor_max_tre_mm"] = units::m_to_mm(cor.size() ? cor.maxCoeff() : 0.0);
-    add_predicted_sd_json(c, r.calibration, j);
-    if (r.cross_validation) j["cross_validation"] = cross_validation_json(*r.cross_validation);
-    add_strategy_json(j, model, relabelled);
-    if (r.strategy == planning::Strategy::kAsListed &&
-        model.procedure2.strategy == planning::Strategy::kNone) {
-      j["strategy"] = 1;
-    }
     print_json(j);
     return;
   }
-  std::printf("evaluated %d targets from %s with model %s%s\n", s.n_targets, args.targets.c_str(),
+  std::printf("evaluated %d targets from %s with model %s%s\n", r.n_targets(), args.targets.c_str(),
               args.model.c_str(),
               config ? (" (config " + std::to_string(*config) + ")").c_str() : "");
   print_strategy(model, relabelled);
@@ -88,16 +65,26 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
               c.layout.c_str());
   if (c.n_flagged > 0) {
     std::printf(
-        "  not correctable               %d targets (%s; left uncorrected)\n", c.n_flagged,
-        why_not_correctable(c));
+        "  not correctable               %d target%s (%s; left uncorrected, RMS_T %s mm as "
+        "registered; not in the figures below)\n",
+        c.n_flagged, c.n_flagged == 1 ? "" : "s", why_not_correctable(c),
+        format_mm(r.flagged_rms_t_m).c_str());
   }
-  std::printf("                                uncorrected  corrected (%s)\n",
-              is_field_model(c.method_used) ? to_string(c.method_used) : "RRBC");
+  if (s.n_targets == 0) {
+    std::printf("  no target was corrected: no corrected RMS_T, gamma or N_bad\n");
+    if (!args.per_target.empty())
+      std::printf("  per-target errors written to %s\n", args.per_target.c_str());
+    return;
+  }
+  std::printf("                                uncorrected  corrected (%s)%s\n",
+              is_field_model(c.method_used) ? to_string(c.method_used) : "RRBC",
+              c.n_flagged > 0
+                  ? (", over the " + std::to_string(s.n_targets) + " targets corrected").c_str()
+                  : "");
   std::printf("  RMS_T                         %8s mm  %8s mm\n", format_mm(s.unc_rms_t_m).c_str(),
               format_mm(s.cor_rms_t_m).c_str());
   std::printf("  max TRE                       %8s mm  %8s mm\n",
-              format_mm(unc.size() ? unc.maxCoeff() : 0.0).c_str(),
-              format_mm(cor.size() ? cor.maxCoeff() : 0.0).c_str());
+              format_mm(s.unc_max_tre_m).c_str(), format_mm(s.cor_max_tre_m).c_str());
   print_predicted_sd(c, r.calibration);
   std::printf("  gamma = (unc - cor) / unc     %.1f %%\n", 100.0 * s.gamma);
   std::printf("  N_bad (TRE got worse)         %d of %d", s.n_bad, s.n_targets);

@@ -67,9 +67,11 @@ void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
               pose_frame_description(chain).c_str());
   std::printf("  target            xyz = %s mm, rpy = %s deg",
               xyz_mm_text(t.translation(), 3).c_str(), rpy_deg_text(t.linear(), 3).c_str());
-  if (psi_rad)
-    std::printf(", psi = %s deg%s", degrees_text(*psi_rad).c_str(),
-                args.psi_deg ? "" : " (default)");
+  if (psi_rad) {
+    std::printf(", psi = %s deg", degrees_text(*psi_rad).c_str());
+  } else if (chain.family() == ChainFamily::kLwr) {
+    std::printf(", psi free (per configuration: 0, or the feasible arm angle nearest 0)");
+  }
   std::printf("\n");
   if (!r.ok()) {
     std::printf("  no solution (%s): %s\n", kinematics::to_string(r.status), r.message.c_str());
@@ -86,6 +88,7 @@ void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
       std::printf("  %d  %-40s", s.config.index(), s.config.to_string().c_str());
       for (int i = 0; i < s.q_rad.size(); ++i)
         std::printf(" %11.6f", shown_joint_value(chain, static_cast<int>(i), s.q_rad(i)));
+      if (s.psi_rad) std::printf("  psi %s deg", format_fixed(units::rad_to_deg(*s.psi_rad), 3).c_str());
       if (s.singular != kinematics::kNoSingularity) {
         std::printf("  singular: %s", kinematics::singularity_names(s.singular).c_str());
       }
@@ -126,8 +129,6 @@ void run_ik(const IkArgs& args) {
         chain.family() == ChainFamily::kLwr,
         "--psi-deg applies to 7-joint arms (lwr4); robot '" << chain.name() << "' has none");
     psi_rad = units::deg_to_rad(*args.psi_deg);
-  } else if (chain.family() == ChainFamily::kLwr) {
-    psi_rad = 0.0;
   }
   IkResult r;
   if (args.current_deg.empty()) {
@@ -185,6 +186,7 @@ nlohmann::json ik_json(const kinematics::SerialChain& chain, const Eigen::Isomet
          {"config", s.config.to_string()},
          {"config_index", s.config.index()},
          {"singular", singular_json(s.singular)}});
+    if (s.psi_rad) solutions.back()["psi_deg"] = units::rad_to_deg(*s.psi_rad);
   }
   j["solutions"] = solutions;
   if (psi_ranges && psi_ranges->ok()) {
@@ -220,7 +222,8 @@ void add_ik_command(CLI::App& app) {
   cmd->add_option("--rotation", args->rotation,
                   "orientation as a rotation matrix, 9 numbers row by row")
       ->expected(9);
-  cmd->add_option("--psi-deg", args->psi_deg, "arm angle psi in deg (7-joint arms; default 0)");
+  cmd->add_option("--psi-deg", args->psi_deg, "arm angle psi in deg (7-joint arms; default: free, each configuration at 0 or at the "
+                  "feasible arm angle nearest 0 within the joint limits)");
   cmd->add_option("--tool-mm", args->tool_mm,
                   "TCP offset X Y Z in the flange frame, mm (replaces the robot's tool)")
       ->expected(3);

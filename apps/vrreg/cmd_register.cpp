@@ -16,6 +16,7 @@
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/measurement_csv.hpp"
 #include "vrreg/io/model_json.hpp"
+#include "vrreg/io/result_json.hpp"
 #include "vrreg/vrreg.hpp"
 
 namespace vrreg::cli {
@@ -58,32 +59,6 @@ RegisterOptions register_options(const RegisterArgs& args) {
   return options;
 }
 
-// The robust check: its scale and bound, then each rejected fiducial with its deviation.
-nlohmann::json robust_json(const RobustReport& report, double false_alarm_rate) {
-  const OutlierDetection& d = report.detection;
-  nlohmann::json j;
-  j["method"] = "leave-one-out affine prediction from neighbours of the same configuration";
-  j["judged"] = d.n_judged;
-  j["sigma_mm"] = units::m_to_mm(d.sigma_m);
-  j["scale"] = d.scale_is_noise ? "sigma_noise" : "spread";
-  j["sigma_spread_mm"] = units::m_to_mm(d.sigma_spread_m);
-  j["sigma_noise_mm"] =
-      d.sigma_noise_m ? nlohmann::json(units::m_to_mm(*d.sigma_noise_m)) : nlohmann::json(nullptr);
-  j["false_alarm_rate"] = false_alarm_rate;
-  j["threshold_sigmas"] = d.threshold_sigmas;
-  j["outliers"] = nlohmann::json::array();
-  for (const RejectedFiducial& r : report.rejected) {
-    nlohmann::json o;
-    o["point"] = r.point;
-    o["config"] = r.config ? nlohmann::json(*r.config) : nlohmann::json(nullptr);
-    o["deviation_mm"] = units::m_to_mm(r.deviation_m);
-    o["sigmas"] = r.sigmas;
-    o["handling"] = r.filled ? "filled from neighbours" : "dropped";
-    j["outliers"].push_back(o);
-  }
-  return j;
-}
-
 void print_robust(const RobustReport& report) {
   const OutlierDetection& d = report.detection;
   std::printf("  robust check                  %zu outlier%s of %d fiducials judged "
@@ -115,7 +90,6 @@ void run_register_unchecked(const RegisterArgs& args) {
   const RegistrationModel& model = result.model;
   const RegistrationResult& reg = result.registration;
   const RigidBodyStatistics& rb = result.rigid_body;
-  const std::vector<std::string>& rejected = result.rejected;  // names, also in result.robust
   const std::optional<planning::Strategy2Summary>& relabelled = result.relabelled;
   const std::size_t n_registered = result.n_registered;
   const std::optional<double>& sigma_opt = result.noise.sigma_opt_m;
@@ -126,40 +100,11 @@ void run_register_unchecked(const RegisterArgs& args) {
 
   const Eigen::Matrix3d& r = model.T_robot_sensor.rotation;
   if (args.json) {
-    nlohmann::json j;
+    nlohmann::json j = io::register_json(result);
     j["source"] = args.fiducials;
     j["config"] = args.config ? nlohmann::json(*args.config) : nlohmann::json(nullptr);
-    j["n_fiducials"] = n_registered;
-    j["rotation"] = {
-        {r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)}, {r(2, 0), r(2, 1), r(2, 2)}};
-    j["translation_mm"] = json_mm3(model.T_robot_sensor.translation_m);
-    j["scale"] = model.T_robot_sensor.scale;
-    j["fre_mm"] = units::m_to_mm(reg.fre_m);
-    j["sigma_l_mm"] = units::m_to_mm(rb.sigma_l_m);
-    j["mean_l_mm"] = units::m_to_mm(rb.mean_m);
-    j["pairs"] = rb.pairs;
-    if (result.sigma_l_sampling.sampled) {
-      const SigmaLSampling& s = result.sigma_l_sampling;
-      j["sigma_l_sampling"] = {
-          {"pairs", s.pairs_sampled},
-          {"pairs_total", s.pairs_total},
-          {"seed", s.seed},
-          {"confidence", s.confidence},
-          {"interval_mm", {units::m_to_mm(s.sigma_l_low_m), units::m_to_mm(s.sigma_l_high_m)}}};
-    }
-    j["spread_mm"] = json_mm3(reg.spread_m);
-    if (sigma_opt) j["sigma_opt_mm"] = units::m_to_mm(*sigma_opt);
-    if (args.sigma_rep_mm) j["sigma_rep_mm"] = *args.sigma_rep_mm;
-    if (sigma_noise) j["sigma_noise_mm"] = units::m_to_mm(*sigma_noise);
-    if (rho_value) j["rho"] = *rho_value;
-    j["rejected"] = rejected;
-    if (result.robust) j["robust"] = robust_json(*result.robust, options.robust->false_alarm_rate);
-    if (result.cross_validation) {
-      j["cross_validation"] = cross_validation_json(*result.cross_validation);
-      j["interpolation"] = to_string(model.interpolation.method);
-    }
+    if (args.sigma_rep_mm) j["sigma_rep_mm"] = *args.sigma_rep_mm;  // as given
     j["model"] = args.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(args.output);
-    add_strategy_json(j, model, relabelled);
     print_json(j);
     return;
   }

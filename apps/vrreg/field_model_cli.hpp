@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Shared by evaluate, correct and register: printing the field models' cross-validation table
-// and predicted uncertainties (docs/field-models.md).
-#include <nlohmann/json.hpp>
+// and predicted uncertainties (docs/field-models.md); their JSON is io/result_json.hpp's.
 #include <optional>
 
 #include "vrreg/correction/correct_targets.hpp"
@@ -13,16 +12,10 @@ namespace vrreg::cli {
 
 /// The table `--interpolation auto` printed: method, CV RMS (3D and per axis), time, choice.
 void print_cross_validation(const CrossValidation& cv);
-/// The same as JSON (without the times, so the same input gives the same bytes).
-nlohmann::json cross_validation_json(const CrossValidation& cv);
 
 /// Median and max of the predicted sd, and, when targets were measured, the calibration.
 void print_predicted_sd(const TargetCorrection& c,
                         const std::optional<UncertaintyCalibration>& calibration);
-/// {"predicted_sd_median_mm", "predicted_sd_max_mm", "calibration": {...}} into `j`.
-void add_predicted_sd_json(const TargetCorrection& c,
-                           const std::optional<UncertaintyCalibration>& calibration,
-                           nlohmann::json& j);
 
 /// Why the flagged points of `c` were not corrected, for evaluate's and correct's summary:
 /// "too few fiducials" when none could be, else "outside the fiducials".

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "command_registry.hpp"
+#include "option_flags.hpp"
 #include "progress_bar.hpp"
 #include "vrreg/config.hpp"
 #include "vrreg/core/check.hpp"
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
     std::cerr << "vrreg: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "vrreg: error: " << e.what() << "\n";
+    std::cerr << "vrreg: error: " << vrreg::cli::with_flags(e.what()) << "\n";
     return 1;
   }
   return 0;

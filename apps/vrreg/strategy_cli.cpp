@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cli_support.hpp"
+#include "vrreg/io/result_json.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
 
@@ -60,34 +61,6 @@ void apply_evaluate_flags(const StrategyFlags& flags, EvaluateOptions& options) 
     options.joint_norm = kinematics::parse_joint_norm(flags.joint_norm);
 }
 
-void add_strategy_json(nlohmann::json& j, const RegistrationModel& model,
-                       const std::optional<planning::Strategy2Summary>& relabelled) {
-  const planning::Procedure2& p = model.procedure2;
-  const int strategy = planning::strategy_number(p.strategy);
-  j["strategy"] = strategy == 0 ? nlohmann::json(nullptr) : nlohmann::json(strategy);
-  if (strategy >= 2) j["joint_norm"] = kinematics::to_string(p.joint_norm);
-  if (relabelled) {
-    // switched_fraction is the paper's figure (section 5.2: "14 % of nominal locations"): the
-    // share of nominal points with any configuration relabelled.
-    j["switched_fraction"] = relabelled->switched_points_fraction();
-    j["switched_points_fraction"] = relabelled->switched_points_fraction();
-    j["n_switched_points"] = relabelled->n_switched_points;
-    j["n_points"] = relabelled->n_points;
-    j["switched_locations_fraction"] = relabelled->switched_locations_fraction();
-    j["n_switched_locations"] = relabelled->n_switched;
-    j["n_locations"] = relabelled->n_locations;
-  }
-  if (strategy == 3) {
-    j["seed"] = p.seed ? nlohmann::json(*p.seed) : nlohmann::json(nullptr);
-    std::vector<std::string> names;
-    for (const std::size_t f : p.registration_fiducials) {
-      names.push_back(location_name(model.fiducials[f]));
-    }
-    j["registration_fiducials"] = names;
-    j["n_correction_fiducials"] = model.fiducials.size();
-  }
-}
-
 void print_strategy(const RegistrationModel& model,
                     const std::optional<planning::Strategy2Summary>& relabelled) {
   const planning::Procedure2& p = model.procedure2;
@@ -116,18 +89,13 @@ void print_strategy(const RegistrationModel& model,
         static_cast<unsigned long long>(p.seed.value_or(0)));
     std::printf("                               ");
     for (const std::size_t f : p.registration_fiducials) {
-      std::printf(" %s", location_name(model.fiducials[f]).c_str());
+      std::printf(" %s", io::location_name(model.fiducials[f]).c_str());
     }
     std::printf(
         "\n  corrections for               %zu fiducials in every configuration "
         "(nearest to each target's by %s)\n",
         model.fiducials.size(), kinematics::to_string(p.joint_norm));
   }
-}
-
-std::string location_name(const Location& location) {
-  return location.point +
-         (location.config ? " (config " + std::to_string(*location.config) + ")" : "");
 }
 
 }  // namespace vrreg::cli

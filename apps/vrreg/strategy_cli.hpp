@@ -33,17 +33,9 @@ planning::Procedure2 register_procedure2(const StrategyFlags& flags);
 /// Evaluate's strategy and joint-norm options from the flags (unset: the model's).
 void apply_evaluate_flags(const StrategyFlags& flags, EvaluateOptions& options);
 
-/// Adds "strategy" (null without one) and, per strategy, "joint_norm", "switched_fraction" (=
-/// "switched_points_fraction", the paper's), "switched_locations_fraction" and their counts (2:
-/// from `relabelled`), "seed", "registration_fiducials" (3) to `j`.
-void add_strategy_json(nlohmann::json& j, const RegistrationModel& model,
-                       const std::optional<planning::Strategy2Summary>& relabelled);
-/// Prints the same as an indented table line (nothing without a strategy).
+/// Prints Procedure 2 as an indented table line (nothing without a strategy).
 void print_strategy(const RegistrationModel& model,
                     const std::optional<planning::Strategy2Summary>& relabelled);
-
-/// "F1 (config 2)": a location's point and label, for messages.
-std::string location_name(const Location& location);
 
 /// The --help text on strategies shared by register and evaluate.
 extern const char* const kStrategyHelp;

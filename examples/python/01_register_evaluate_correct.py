@@ -16,8 +16,12 @@ print(registered)
 print(f"rho = {registered.rho:.2f} (RRBC should help when > {vrreg.RHO_THRESHOLD})")
 
 evaluated = vrreg.evaluate(registered.model, cell)
-print(f"RMS_T {evaluated.unc_rms_t * 1e3:.3f} mm uncorrected, "
-      f"{evaluated.cor_rms_t * 1e3:.3f} mm corrected, gamma {100 * evaluated.gamma:.1f} %")
+# RMS_T and gamma are over the targets that were corrected; None when none could be.
+unc, cor, gamma = evaluated.unc_rms_t, evaluated.cor_rms_t, evaluated.gamma
+if unc is None or cor is None or gamma is None:
+    raise SystemExit(f"no target could be corrected ({evaluated.n_flagged} flagged)")
+print(f"RMS_T {unc * 1e3:.3f} mm uncorrected, {cor * 1e3:.3f} mm corrected, "
+      f"gamma {100 * gamma:.1f} % over {evaluated.n_corrected} of {evaluated.n_targets} targets")
 
 corrected = vrreg.correct(registered.model, cell)
 print(f"first target {corrected.names[0]}: command {corrected.corrected[0] * 1e3} mm")

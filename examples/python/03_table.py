@@ -16,5 +16,9 @@ for dataset, edge in CUBE_EDGE.items():
         sim = vrreg.simulate("ur5", dataset, seed=seed)
         r = vrreg.register(sim.measurements, sigma_rep=sim.sigma_rep_spec)
         e = vrreg.evaluate(r.model, sim.measurements, interpolation="octuplet", cube_edge=edge)
-        print(f"{dataset:8} {seed:>4} {r.rho:>6.2f} {e.unc_rms_t * 1e3:>13.3f} "
-              f"{e.cor_rms_t * 1e3:>13.3f} {100 * e.gamma:>8.1f} {e.n_bad:>5}")
+        unc, cor, gamma = e.unc_rms_t, e.cor_rms_t, e.gamma  # None if no target was corrected
+        if unc is None or cor is None or gamma is None:
+            print(f"{dataset:8} {seed:>4} no target corrected")
+            continue
+        print(f"{dataset:8} {seed:>4} {r.rho:>6.2f} {unc * 1e3:>13.3f} "
+              f"{cor * 1e3:>13.3f} {100 * gamma:>8.1f} {e.n_bad:>5}")

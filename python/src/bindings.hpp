@@ -3,11 +3,15 @@
 // One function per area adds its part of the module (module.cpp calls them in dependency order).
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 namespace vrreg::python {
 
 namespace py = pybind11;
 
 void bind_errors(py::module_& m);       // errors.cpp: InputError, FileError
+/// A library message with its `option` names as Python keywords (errors.cpp).
+std::string with_keywords(std::string message);
 void bind_model(py::module_& m);        // model.cpp: Model, load_model
 void bind_io(py::module_& m);           // io.cpp: Measurements, read_measurements
 void bind_results(py::module_& m);      // results.cpp: RegisterResult, EvaluateResult, ...

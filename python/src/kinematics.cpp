@@ -58,7 +58,6 @@ void bind_kinematics(py::module_& m) {
          const py::object& tool, bool joint_limits) {
         const kinematics::SerialChain chain = chain_named(robot.text, tool);
         const Eigen::Isometry3d t = pose_from(pose);
-        if (!psi && chain.family() == kinematics::ChainFamily::kLwr) psi = 0.0;
         kinematics::IkOptions options;
         options.apply_joint_limits = joint_limits;
         const kinematics::IkResult r = kinematics::inverse_kinematics(chain, t, psi, options);
@@ -66,7 +65,9 @@ void bind_kinematics(py::module_& m) {
         std::vector<std::string> labels;
         std::vector<int> indices;
         std::vector<std::string> singular;
+        std::vector<std::optional<double>> psi_of;
         for (std::size_t s = 0; s < r.solutions.size(); ++s) {
+          psi_of.push_back(r.solutions[s].psi_rad ? r.solutions[s].psi_rad : psi);
           q.col(static_cast<Eigen::Index>(s)) = r.solutions[s].q_rad;
           labels.push_back(r.solutions[s].config.to_string());
           indices.push_back(r.solutions[s].config.index());
@@ -79,6 +80,7 @@ void bind_kinematics(py::module_& m) {
         d["configs"] = labels;
         d["config_indices"] = indices;
         d["singular"] = singular;
+        if (chain.family() == kinematics::ChainFamily::kLwr) d["psi"] = psi_of;
         d["n_outside_limits"] = r.n_outside_limits;
         return d;
       },
@@ -90,7 +92,8 @@ void bind_kinematics(py::module_& m) {
       "'shoulder-left/elbow-up/wrist-noflip', 'GC=+,-,+' or 'q3+,q5-'), config_indices, "
       "singular, status "
       "('ok', 'unreachable', 'outside-limits') and message. psi: LWR 4+ arm angle [rad] "
-      "(default 0); tool: (3,) TCP offset in the flange frame [m].");
+      "(default: free, each configuration at 0 or the feasible arm angle nearest 0; LWR results "
+      "add psi, each solution's [rad]); tool: (3,) TCP offset in the flange frame [m].");
   m.def("robots", &kinematics::builtin_robot_names, "Names fk and ik accept.");
 }
 

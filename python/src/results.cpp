@@ -7,6 +7,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "vrreg/core/units.hpp"
+#include "vrreg/io/result_json.hpp"
 #include "vrreg/vrreg.hpp"
 
 namespace vrreg::python {
@@ -54,7 +55,7 @@ py::object cross_validation_dict(const std::optional<CrossValidation>& cv) {
     py::dict d;
     d["method"] = std::string(to_string(row.method));
     d["applicable"] = row.applicable;
-    d["note"] = row.note;
+    d["note"] = with_keywords(row.note);
     d["rms_common"] = row.rms_common_m;
     d["rms"] = row.rms_m;
     d["n_predicted"] = row.n_predicted;
@@ -69,33 +70,15 @@ py::object cross_validation_dict(const std::optional<CrossValidation>& cv) {
   return out;
 }
 
-// Lengths as the command line prints them: millimetres, 4 decimals (0.1 um).
-std::string mm_text(double metres) { return fmt::format("{:.4f} mm", units::m_to_mm(metres)); }
-
-std::string register_repr(const RegisterResult& r) {
-  std::string text = "<vrreg.RegisterResult " + std::to_string(r.n_registered) +
-                     " fiducials, FRE " + mm_text(r.registration.fre_m) + ", sigma_L " +
-                     mm_text(r.rigid_body.sigma_l_m);
-  if (r.noise.sigma_noise_m) text += ", sigma_noise " + mm_text(*r.noise.sigma_noise_m);
-  if (r.noise.rho) text += fmt::format(", rho {:.2f}", *r.noise.rho);
-  if (!r.rejected.empty()) text += ", " + std::to_string(r.rejected.size()) + " rejected";
-  return text + ">";
+// The brief report of io (one place for the figures a result shows first), as Python's repr.
+template <typename Result>
+std::string repr_of(const char* type, const Result& r) {
+  return std::string("<vrreg.") + type + " " + io::brief_report(r) + ">";
 }
 
-// gamma as the paper prints it (percent, one decimal), and the targets left uncorrected.
-std::string evaluate_repr(const EvaluateResult& r) {
-  return fmt::format(
-      "<vrreg.EvaluateResult {} targets, {}: RMS_T {} uncorrected, {} corrected, gamma {:.1f}%, "
-      "N_bad {}, n_flagged {}>",
-      r.summary.n_targets, to_string(r.correction.method_used), mm_text(r.summary.unc_rms_t_m),
-      mm_text(r.summary.cor_rms_t_m), 100.0 * r.summary.gamma, r.summary.n_bad,
-      r.correction.n_flagged);
-}
-
-std::string correct_repr(const CorrectResult& r) {
-  return fmt::format("<vrreg.CorrectResult {} points, {}, n_flagged {}>",
-                     r.correction.corrected_robot_m.cols(), to_string(r.correction.method_used),
-                     r.correction.n_flagged);
+// A figure of the corrected targets, or None when no target was corrected.
+py::object of_corrected(const EvaluateResult& r, double value) {
+  return r.summary.n_targets > 0 ? py::object(py::float_(value)) : py::object(py::none());
 }
 
 // What evaluate and correct share: the interpolation used and the corrected points.
@@ -238,24 +221,41 @@ void bind_results(py::module_& m) {
           "cross_validation",
           [](const RegisterResult& r) { return cross_validation_dict(r.cross_validation); },
           "interpolation 'auto': the K-fold cross-validation table [m] and its choice (dict)")
-      .def("__repr__", &register_repr);
+      .def(
+          "to_json", [](const RegisterResult& r) { return with_keywords(io::register_json(r).dump(2)); },
+          "the JSON `vrreg register --json` prints for this result (lengths in mm), as a string")
+      .def("__repr__", [](const RegisterResult& r) { return repr_of("RegisterResult", r); });
 
   py::class_<EvaluateResult> ev(m, "EvaluateResult",
                                 "A model's accuracy on targets; lengths in metres.");
   bind_correction_members(ev);
-  ev.def_property_readonly("n_targets", [](const EvaluateResult& r) { return r.summary.n_targets; })
+  ev.def_property_readonly("n_targets", &EvaluateResult::n_targets,
+                           "every target evaluated, corrected or not")
       .def_property_readonly(
-          "unc_rms_t", [](const EvaluateResult& r) { return r.summary.unc_rms_t_m; },
-          "RMS_T uncorrected (Eq. 4) [m]")
+          "n_corrected", [](const EvaluateResult& r) { return r.summary.n_targets; },
+          "the targets corrected: unc_rms_t, cor_rms_t, gamma and n_bad are over these only")
       .def_property_readonly(
-          "cor_rms_t", [](const EvaluateResult& r) { return r.summary.cor_rms_t_m; },
-          "RMS_T RRBC-corrected (Eq. 4, 8) [m]")
+          "flagged_rms_t",
+          [](const EvaluateResult& r) -> py::object {
+            if (r.correction.n_flagged == 0) return py::none();
+            return py::float_(r.flagged_rms_t_m);
+          },
+          "RMS_T of the n_flagged targets left uncorrected, as registered [m]; None if none")
       .def_property_readonly(
-          "gamma", [](const EvaluateResult& r) { return r.summary.gamma; },
-          "(unc - cor) / unc, a fraction (x100 for the paper's %)")
+          "unc_rms_t",
+          [](const EvaluateResult& r) { return of_corrected(r, r.summary.unc_rms_t_m); },
+          "RMS_T uncorrected (Eq. 4) of the corrected targets [m]; None if none was corrected")
+      .def_property_readonly(
+          "cor_rms_t",
+          [](const EvaluateResult& r) { return of_corrected(r, r.summary.cor_rms_t_m); },
+          "RMS_T RRBC-corrected (Eq. 4, 8) [m]; None if no target was corrected")
+      .def_property_readonly(
+          "gamma", [](const EvaluateResult& r) { return of_corrected(r, r.summary.gamma); },
+          "(unc - cor) / unc over the corrected targets, a fraction (x100 for the paper's %); "
+          "None if none was corrected")
       .def_property_readonly(
           "n_bad", [](const EvaluateResult& r) { return r.summary.n_bad; },
-          "N_bad: targets whose TRE RRBC made worse")
+          "N_bad: corrected targets whose TRE RRBC made worse")
       .def_property_readonly("bad_targets", [](const EvaluateResult& r) { return r.bad_targets; })
       .def_property_readonly(
           "strategy", [](const EvaluateResult& r) { return planning::strategy_number(r.strategy); },
@@ -276,7 +276,10 @@ void bind_results(py::module_& m) {
           },
           "field models: RMS of TRE / predicted sd (1 = calibrated) and the fraction within "
           "2 sd (dict), else None")
-      .def("__repr__", &evaluate_repr);
+      .def(
+          "to_json", [](const EvaluateResult& r) { return with_keywords(io::evaluate_json(r).dump(2)); },
+          "the JSON `vrreg evaluate --json` prints for this result (lengths in mm), as a string")
+      .def("__repr__", [](const EvaluateResult& r) { return repr_of("EvaluateResult", r); });
   ev.def_property_readonly(
         "unc_tre",
         [](py::object self) { return view_of(self.cast<const EvaluateResult&>().unc_tre_m, self); },
@@ -301,7 +304,10 @@ void bind_results(py::module_& m) {
   py::class_<CorrectResult> cor(m, "CorrectResult",
                                 "Corrected points, in the order given; metres.");
   bind_correction_members(cor);
-  cor.def("__repr__", &correct_repr);
+  cor.def(
+         "to_json", [](const CorrectResult& r) { return with_keywords(io::correct_json(r).dump(2)); },
+         "the JSON `vrreg correct --json` prints for this result (lengths in mm), as a string")
+      .def("__repr__", [](const CorrectResult& r) { return repr_of("CorrectResult", r); });
 }
 
 }  // namespace vrreg::python

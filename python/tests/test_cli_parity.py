@@ -2,6 +2,7 @@
 """Python on a measurement CSV gives the command line's numbers (1e-12 relative), and model files
 pass between the two."""
 import csv
+import json
 
 import numpy as np
 import pytest
@@ -34,6 +35,8 @@ def test_register_matches_cli(cli, cell, example_cell, tmp_path):
     assert close(j["rho"], r.rho)
     assert j["pairs"] == r.pairs
     assert close(j["spread_mm"], r.spread * MM)
+    own = json.loads(r.to_json())
+    assert {k: v for k, v in j.items() if k not in ("source", "config", "sigma_rep_mm", "model")} == own
 
 
 def test_evaluate_and_correct_match_cli(cli, cell, example_cell, tmp_path):
@@ -49,6 +52,9 @@ def test_evaluate_and_correct_match_cli(cli, cell, example_cell, tmp_path):
     assert close(j["cor_rms_t_mm"], e.cor_rms_t * MM)
     assert close(j["gamma_percent"], e.gamma * 100)
     assert close(j["cor_max_tre_mm"], e.cor_tre.max() * MM)
+    # The result's own JSON is the command's, less what only the command knows (its files).
+    own = json.loads(e.to_json())
+    assert {k: v for k, v in j.items() if k not in ("model", "targets")} == own
 
     out = tmp_path / "corrected.csv"
     cli("correct", "--model", model_path, "--points", example_cell, "-o", out)

@@ -105,3 +105,18 @@ def test_other_types_are_no_path():
     for bad in (3, None, ["m.json"]):
         with pytest.raises(TypeError):
             vrreg.load_model(bad)
+
+
+def test_messages_name_python_keywords_not_command_line_flags(example_cell):
+    """The library names its options; Python says them as its keywords, never as flags."""
+    cell = vrreg.read_measurements(example_cell)
+    model = vrreg.register(cell).model
+    with pytest.raises(vrreg.InputError) as raised:
+        vrreg.evaluate(model, cell, interpolation="octuplet")
+    message = str(raised.value)
+    assert "cube_edge=" in message and "--" not in message and "`" not in message, message
+    arm_cell = vrreg.simulate("ur5", "A2", seed=1).measurements  # joints, no robot kept
+    with pytest.raises(vrreg.InputError) as raised:
+        vrreg.evaluate(vrreg.register(arm_cell).model, arm_cell, interpolation="joint")
+    message = str(raised.value)
+    assert "arm=" in message and "--robot" not in message, message

@@ -24,4 +24,15 @@ std::string format_mm3(const Eigen::Vector3d& v_m, int decimals) {
                      format_mm(v_m.z(), decimals));
 }
 
+std::string with_option_words(std::string message, std::span<const OptionWord> words) {
+  for (const auto& [name, word] : words) {
+    const std::string quoted = "`" + std::string(name) + "`";
+    for (std::size_t at = 0; (at = message.find(quoted, at)) != std::string::npos;) {
+      message.replace(at, quoted.size(), word);
+      at += word.size();
+    }
+  }
+  return message;
+}
+
 }  // namespace vrreg

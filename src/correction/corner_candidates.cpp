@@ -49,7 +49,7 @@ CornerFiducials CornerCandidates::octuplet(const Eigen::Vector3d& target_robot_n
                                            double cube_edge_m) const {
   VRREG_THROW_UNLESS(std::isfinite(cube_edge_m) && cube_edge_m > 4.0 * tolerance_m_,
                      "octuplet cube edge must be > 4 x the match tolerance (got "
-                         << units::m_to_mm(cube_edge_m) << " mm): set --cube-mm");
+                         << units::m_to_mm(cube_edge_m) << " mm): set `cube_edge`");
   const Eigen::Vector3d half = Eigen::Vector3d::Constant(0.5 * cube_edge_m);
   CornerFiducials out;
   for (std::size_t corner = 0; corner < 8; ++corner) {

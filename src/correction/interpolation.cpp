@@ -13,7 +13,7 @@ void InterpolationSettings::validate() const {
   VRREG_THROW_UNLESS(std::isfinite(cube_edge_m) && cube_edge_m >= 0.0,
                      "the octuplet cube edge must be finite and >= 0, got " << cube_edge_m << " m");
   VRREG_THROW_UNLESS(method != InterpolationMethod::kOctuplet || cube_edge_m > 0.0,
-                     "octuplet interpolation needs a cube edge (--cube-mm EDGE)");
+                     "octuplet interpolation needs a cube edge (`cube_edge`)");
 }
 
 const char* to_string(InterpolationMethod method) {

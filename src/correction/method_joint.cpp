@@ -183,7 +183,7 @@ Eigen::Vector3d marker_on_flange_m(const CorrectorData& data) {
   VRREG_THROW_UNLESS(worst_m <= kNominalMismatchM,
                      "the fiducials' robot positions are not " << data.robot->name()
                          << "'s forward kinematics of their joints to one marker (off by up to "
-                         << worst_m * 1e3 << " mm): another --robot?");
+                         << worst_m * 1e3 << " mm): another `robot`?");
   return p_m;
 }
 
@@ -227,7 +227,7 @@ std::unique_ptr<const JointMethod> fit_joint_model(
 
 std::string joint_unavailable(const CorrectorData& data, const MethodSettings&) {
   if (!data.has_joints()) return "the fiducials have no joint angles";
-  if (!data.robot) return "no robot given (--robot)";
+  if (!data.robot) return "no robot given (`robot`)";
   if (data.joints_rad.rows() != data.robot->n_joints()) {
     return "the fiducials have " + std::to_string(data.joints_rad.rows()) +
            " joint angles, the robot " + std::to_string(data.robot->n_joints());

@@ -20,7 +20,8 @@ class NearestConfigurationMethod final : public FittedMethod {
         joints_rad_(data.joints_rad),
         corrections_sensor_m_(data.corrections_sensor_m),
         cube_edge_m_(settings.cube_edge_m),
-        norm_(*settings.nearest_configuration) {}
+        norm_(*settings.nearest_configuration),
+        kinds_(data.robot ? kinematics::JointKinds(*data.robot) : kinematics::JointKinds()) {}
 
   [[nodiscard]] InterpolationMethod method() const override {
     return InterpolationMethod::kOctuplet;
@@ -73,7 +74,7 @@ class NearestConfigurationMethod final : public FittedMethod {
       for (std::size_t k = 0; k < candidates.size(); ++k)
         q.col(static_cast<Eigen::Index>(k)) = joints_rad_.col(candidates[k]);
       s.fiducial[c] = candidates[static_cast<std::size_t>(
-          *kinematics::nearest_configuration(q, target_q_rad, norm_))];
+          *kinematics::nearest_configuration(q, target_q_rad, norm_, kinds_))];
       s.weight[c] = 0.125;
     }
     s.size = 8;
@@ -85,6 +86,7 @@ class NearestConfigurationMethod final : public FittedMethod {
   Points3 corrections_sensor_m_;
   double cube_edge_m_;
   kinematics::JointNorm norm_;
+  kinematics::JointKinds kinds_;  // a slide's travel [m] is not an angle
 };
 
 void check_nearest_configuration(const CorrectorData& data, const MethodSettings& settings) {
@@ -94,7 +96,7 @@ void check_nearest_configuration(const CorrectorData& data, const MethodSettings
   VRREG_THROW_UNLESS(std::isfinite(settings.cube_edge_m) &&
                          settings.cube_edge_m > 4.0 * settings.match_tolerance_m,
                      "Strategy 3 corrects with octuplets and needs a cube edge (got "
-                         << units::m_to_mm(settings.cube_edge_m) << " mm): set --cube-mm");
+                         << units::m_to_mm(settings.cube_edge_m) << " mm): set `cube_edge`");
   VRREG_THROW_UNLESS(data.has_joints(),
                      "Strategy 3 needs the fiducials' joints (q1_rad..qN_rad)");
 }

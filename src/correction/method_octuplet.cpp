@@ -83,7 +83,7 @@ class OctupletMethod final : public FittedMethod {
 std::string octuplet_unavailable(const CorrectorData& data, const MethodSettings& settings) {
   if (settings.nearest_configuration) return {};  // Strategy 3 checks its own
   if (!(settings.cube_edge_m > 0.0)) {
-    return "octuplet interpolation needs a cube edge (--cube-mm)";
+    return "octuplet interpolation needs a cube edge (`cube_edge`)";
   }
   if (data.size() < 8) {
     return "octuplet interpolation needs at least 8 fiducials, got " + std::to_string(data.size());

@@ -24,7 +24,7 @@ OctupletStencils::OctupletStencils(const ConstPoints3Ref& fiducials_robot_m, dou
                                   << fiducials_robot_m.cols() << " fiducials");
   VRREG_THROW_UNLESS(std::isfinite(cube_edge_m) && cube_edge_m > 0.0,
                      "octuplet interpolation needs a cube edge > 0 (got "
-                         << units::m_to_mm(cube_edge_m) << " mm): set --cube-mm");
+                         << units::m_to_mm(cube_edge_m) << " mm): set `cube_edge`");
   VRREG_THROW_UNLESS(
       std::isfinite(tolerance_m) && tolerance_m > 0.0 && tolerance_m < 0.25 * cube_edge_m,
       "octuplet match tolerance must be > 0 and < a/4 (got "

@@ -57,7 +57,8 @@ double PathRelabelling::switched_locations_fraction() const {
              : static_cast<double>(n_switched) / static_cast<double>(n_configurations);
 }
 
-PathRelabelling relabel_along_path(const std::vector<PointConfigurations>& path, JointNorm norm) {
+PathRelabelling relabel_along_path(const std::vector<PointConfigurations>& path, JointNorm norm,
+                                   const JointKinds& kinds) {
   PathRelabelling out;
   if (path.empty()) return out;
   std::set<int> used;
@@ -76,9 +77,9 @@ PathRelabelling relabel_along_path(const std::vector<PointConfigurations>& path,
     for (std::size_t k = 0; k < listed.size(); ++k) {
       q.col(static_cast<Eigen::Index>(k)) = point.q_rad.col(listed[k]);
     }
-    const int ref = p == 0 ? 0 : *nearest_configuration(q, reference, norm);
+    const int ref = p == 0 ? 0 : *nearest_configuration(q, reference, norm, kinds);
     reference = q.col(ref);
-    std::vector<int> ranked = order_by_distance(q, reference, norm);
+    std::vector<int> ranked = order_by_distance(q, reference, norm, kinds);
     // The reference is at distance 0 and comes first unless an identical configuration precedes.
     ranked.erase(std::find(ranked.begin(), ranked.end(), ref));
     ranked.insert(ranked.begin(), ref);

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/kinematics/lwr_free_psi.hpp"
 #include "vrreg/kinematics/lwr_ik.hpp"
 #include "vrreg/kinematics/numeric_ik.hpp"
 #include "vrreg/kinematics/ur_ik.hpp"
@@ -16,9 +17,7 @@ IkResult inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T
     case ChainFamily::kUr:
       return ur_inverse_kinematics(chain, T_base_tcp, options);
     case ChainFamily::kLwr:
-      VRREG_THROW_UNLESS(psi_rad.has_value(), "inverse kinematics: robot '"
-                                                  << chain.name()
-                                                  << "' has 7 joints and needs an arm angle psi");
+      if (!psi_rad) return lwr_inverse_kinematics_free_psi(chain, T_base_tcp, options);
       return lwr_inverse_kinematics(chain, T_base_tcp, *psi_rad, options);
     case ChainFamily::kGeneric:
       break;
@@ -48,7 +47,7 @@ IkResult nearest_solution(const SerialChain& chain, const IkResult& all,
     const double d = norm == JointNorm::kL2 ? travel.norm() : travel.cwiseAbs().maxCoeff();
     if (d < best) {
       best = d;
-      result.solutions.assign(1, {*q, s.config, s.singular});
+      result.solutions.assign(1, {*q, s.config, s.singular, s.psi_rad});
     }
   }
   if (result.solutions.empty()) {

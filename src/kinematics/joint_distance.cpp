@@ -40,32 +40,47 @@ std::optional<JointVector> shift_towards(const SerialChain& chain, const JointRe
 
 const char* to_string(JointNorm norm) { return norm == JointNorm::kL2 ? "l2" : "linf"; }
 
-double joint_distance_l2(const JointRef& a_rad, const JointRef& b_rad) {
+JointKinds::JointKinds(const SerialChain& chain)
+    : prismatic_(static_cast<std::size_t>(chain.n_joints())) {
+  for (int i = 0; i < chain.n_joints(); ++i) {
+    prismatic_[static_cast<std::size_t>(i)] = chain.row(i).prismatic();
+  }
+}
+
+double JointKinds::difference(Eigen::Index i, double a, double b) const {
+  const auto k = static_cast<std::size_t>(i);
+  return k < prismatic_.size() && prismatic_[k] ? a - b : wrap_angle(a - b);
+}
+
+double joint_distance_l2(const JointRef& a_rad, const JointRef& b_rad, const JointKinds& kinds) {
   check_sizes(a_rad, b_rad);
   double sum = 0.0;
   for (Eigen::Index i = 0; i < a_rad.size(); ++i) {
-    const double d = wrap_angle(a_rad(i) - b_rad(i));
+    const double d = kinds.difference(i, a_rad(i), b_rad(i));
     sum += d * d;
   }
   return std::sqrt(sum);
 }
 
-double joint_distance_linf(const JointRef& a_rad, const JointRef& b_rad) {
+double joint_distance_linf(const JointRef& a_rad, const JointRef& b_rad,
+                           const JointKinds& kinds) {
   check_sizes(a_rad, b_rad);
   double worst = 0.0;
   for (Eigen::Index i = 0; i < a_rad.size(); ++i) {
-    worst = std::max(worst, std::abs(wrap_angle(a_rad(i) - b_rad(i))));
+    worst = std::max(worst, std::abs(kinds.difference(i, a_rad(i), b_rad(i))));
   }
   return worst;
 }
 
-double joint_distance(const JointRef& a_rad, const JointRef& b_rad, JointNorm norm) {
-  return norm == JointNorm::kL2 ? joint_distance_l2(a_rad, b_rad)
-                                : joint_distance_linf(a_rad, b_rad);
+double joint_distance(const JointRef& a_rad, const JointRef& b_rad, JointNorm norm,
+                      const JointKinds& kinds) {
+  return norm == JointNorm::kL2 ? joint_distance_l2(a_rad, b_rad, kinds)
+                                : joint_distance_linf(a_rad, b_rad, kinds);
 }
 
 std::vector<int> order_by_distance(const Eigen::Ref<const Eigen::MatrixXd>& candidates_rad,
-                                   const JointRef& reference_rad, JointNorm norm) {
+                                   const JointRef& reference_rad, JointNorm norm,
+                                   const JointKinds& kinds) {
   VRREG_THROW_UNLESS(candidates_rad.cols() == 0 || candidates_rad.rows() == reference_rad.size(),
                      "joint distance: candidates have " << candidates_rad.rows()
                                                         << " joints, the reference "
@@ -74,7 +89,7 @@ std::vector<int> order_by_distance(const Eigen::Ref<const Eigen::MatrixXd>& cand
   std::vector<double> distance(n);
   for (std::size_t j = 0; j < n; ++j) {
     distance[j] =
-        joint_distance(candidates_rad.col(static_cast<Eigen::Index>(j)), reference_rad, norm);
+        joint_distance(candidates_rad.col(static_cast<Eigen::Index>(j)), reference_rad, norm, kinds);
   }
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
@@ -85,8 +100,9 @@ std::vector<int> order_by_distance(const Eigen::Ref<const Eigen::MatrixXd>& cand
 }
 
 std::optional<int> nearest_configuration(const Eigen::Ref<const Eigen::MatrixXd>& candidates_rad,
-                                         const JointRef& reference_rad, JointNorm norm) {
-  const std::vector<int> order = order_by_distance(candidates_rad, reference_rad, norm);
+                                         const JointRef& reference_rad, JointNorm norm,
+                                         const JointKinds& kinds) {
+  const std::vector<int> order = order_by_distance(candidates_rad, reference_rad, norm, kinds);
   if (order.empty()) return std::nullopt;
   return order.front();
 }

@@ -15,6 +15,8 @@ ImprovementSummary summarize_improvement(const Eigen::Ref<const Eigen::VectorXd>
   s.n_targets = static_cast<int>(unc_tre_m.size());
   s.unc_rms_t_m = root_mean_square(unc_tre_m);
   s.cor_rms_t_m = root_mean_square(cor_tre_m);
+  s.unc_max_tre_m = unc_tre_m.size() > 0 ? unc_tre_m.maxCoeff() : 0.0;
+  s.cor_max_tre_m = cor_tre_m.size() > 0 ? cor_tre_m.maxCoeff() : 0.0;
   s.gamma = s.unc_rms_t_m > 0.0 ? (s.unc_rms_t_m - s.cor_rms_t_m) / s.unc_rms_t_m : 0.0;
   std::vector<double> improved;
   for (Eigen::Index n = 0; n < unc_tre_m.size(); ++n) {

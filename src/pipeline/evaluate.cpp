@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/pipeline/evaluate.hpp"
 
+#include <cmath>
+#include <vector>
+
 #include "procedure2_steps.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
@@ -19,15 +22,15 @@ Strategy strategy_to_use(const RegistrationModel& model, const EvaluateOptions& 
                      "the model was built with "
                          << (built == Strategy::kNone
                                  ? std::string("no strategy")
-                                 : "--strategy " + std::to_string(planning::strategy_number(built)))
-                         << ", not --strategy " << planning::strategy_number(s)
+                                 : "`strategy` " + std::to_string(planning::strategy_number(built)))
+                         << ", not `strategy` " << planning::strategy_number(s)
                          << ": register again with it");
   VRREG_THROW_UNLESS(
       !options.joint_norm || s == Strategy::kAlongPath || s == Strategy::kVolumeCorners,
-      "--joint-norm is for strategies 2 and 3");
+      "`joint_norm` is for strategies 2 and 3");
   VRREG_THROW_UNLESS(s != Strategy::kAlongPath || !options.joint_norm ||
                          *options.joint_norm == model.procedure2.joint_norm,
-                     "the model's Strategy 2 labels use --joint-norm "
+                     "the model's Strategy 2 labels use `joint_norm` "
                          << kinematics::to_string(model.procedure2.joint_norm)
                          << "; the targets must use the same");
   return s;
@@ -42,7 +45,7 @@ EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet
   // A model built for one configuration is evaluated on that configuration unless told otherwise.
   out.config = options.config ? options.config : model.config;
   VRREG_THROW_UNLESS(out.strategy != Strategy::kAsListed || out.config,
-                     "--strategy 1 evaluates one configuration: give --config N");
+                     "`strategy` 1 evaluates one configuration: give `config`");
   pipeline_detail::PointsToCorrect points;
   pipeline_detail::prepare_points(model, file_set, out.strategy, norm, out.config, true, points);
   const MeasurementSet* set = points.set;
@@ -58,7 +61,21 @@ EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet
   // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.
   out.unc_tre_m = point_errors(out.correction.uncorrected_robot_m, out.targets_robot_m);  // Eq. 3
   out.cor_tre_m = point_errors(out.correction.corrected_robot_m, out.targets_robot_m);
-  out.summary = summarize_improvement(out.unc_tre_m, out.cor_tre_m);
+  // The summary never mixes corrected and uncorrected targets: RMS_T, gamma and N_bad are over
+  // the corrected ones, and the others are counted apart with their own RMS_T.
+  std::vector<Eigen::Index> corrected;
+  double flagged_sum_m2 = 0.0;
+  for (Eigen::Index k = 0; k < out.unc_tre_m.size(); ++k) {
+    if (is_corrected(out.correction.stencils[static_cast<std::size_t>(k)].status)) {
+      corrected.push_back(k);
+    } else {
+      flagged_sum_m2 += out.unc_tre_m(k) * out.unc_tre_m(k);
+    }
+  }
+  const auto n_flagged = static_cast<double>(out.unc_tre_m.size()) - static_cast<double>(corrected.size());
+  out.flagged_rms_t_m = n_flagged > 0 ? std::sqrt(flagged_sum_m2 / n_flagged) : 0.0;
+  out.summary = summarize_improvement(out.unc_tre_m(corrected), out.cor_tre_m(corrected));
+  for (int& k : out.summary.bad_targets) k = static_cast<int>(corrected[static_cast<std::size_t>(k)]);
   out.calibration =
       uncertainty_calibration(out.cor_tre_m, out.correction.predicted_sd_m);
   pipeline_detail::labels_of(*set, rows, out.names, out.configs);

@@ -64,11 +64,11 @@ void check_options(const RegisterOptions& options) {
   options.validate();
   const planning::Strategy s = options.procedure2.strategy;
   VRREG_THROW_UNLESS(s == planning::Strategy::kNone || s == planning::Strategy::kAsListed,
-                     "the marker offset is estimated for one registration: --strategy "
+                     "the marker offset is estimated for one registration: `strategy` "
                          << planning::strategy_number(s) << " is not available with it");
-  VRREG_THROW_UNLESS(!options.robust, "--robust is not available with the marker offset estimate");
+  VRREG_THROW_UNLESS(!options.robust, "`robust` is not available with the marker offset estimate");
   VRREG_THROW_UNLESS(!options.registration.estimate_scale,
-                     "--scale is not available with the marker offset estimate");
+                     "`scale` is not available with the marker offset estimate");
 }
 
 }  // namespace

@@ -14,17 +14,19 @@ namespace vrreg::pipeline_detail {
 void require_configurations(const MeasurementSet& set, planning::Strategy strategy) {
   const std::string s = std::to_string(planning::strategy_number(strategy));
   if (!set.has_config) {
-    fail(set, "--strategy " + s + " needs a config column (the arm configuration of each row)");
+    fail(set, "`strategy` " + s + " needs a config column (the arm configuration of each row)");
   }
   if (set.n_joints == 0) {
-    fail(set, "--strategy " + s + " needs joint columns (q1_rad..qN_rad or q1_deg..qN_deg)");
+    fail(set, "`strategy` " + s + " needs joint columns (q1_rad..qN_rad or q1_deg..qN_deg)");
   }
 }
 
-planning::Strategy2Result relabel(const MeasurementSet& set, kinematics::JointNorm norm) {
+planning::Strategy2Result relabel(const MeasurementSet& set, kinematics::JointNorm norm,
+                                  const std::optional<kinematics::SerialChain>& robot) {
   require_configurations(set, planning::Strategy::kAlongPath);
   try {
-    return planning::relabel_strategy2(set, norm);
+    return planning::relabel_strategy2(
+        set, norm, robot ? kinematics::JointKinds(*robot) : kinematics::JointKinds());
   } catch (const FileError&) {
     throw;
   } catch (const InputError& e) {
@@ -42,7 +44,7 @@ void prepare_points(const RegistrationModel& model, const MeasurementSet& file_s
     out.set = &out.moved;
   }
   if (strategy == planning::Strategy::kAlongPath) {  // the points take the labels of their path
-    planning::Strategy2Result r = relabel(*out.set, norm);
+    planning::Strategy2Result r = relabel(*out.set, norm, model.robot);
     out.relabelled_set = std::move(r.set);
     out.relabelled = r.summary;
     out.set = &out.relabelled_set;
@@ -125,7 +127,7 @@ TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementS
     require_configurations(set, planning::Strategy::kVolumeCorners);
     if (settings.method != InterpolationMethod::kOctuplet &&
         settings.method != InterpolationMethod::kLinear) {
-      fail(set, std::string("--strategy 3 corrects with octuplets, not --interpolation ") +
+      fail(set, std::string("`strategy` 3 corrects with octuplets, not `interpolation` ") +
                     to_string(settings.method));
     }
   }
@@ -136,7 +138,7 @@ TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementS
   }
   const bool field = is_field_model(settings.method);
   if (field && request.strategy == planning::Strategy::kAlongPath) {
-    fail(set, std::string("--strategy 2 corrects with the paper's stencils, not --interpolation ") +
+    fail(set, std::string("`strategy` 2 corrects with the paper's stencils, not `interpolation` ") +
                   to_string(settings.method));
   }
   const auto correct = [&] {

@@ -21,7 +21,8 @@ namespace vrreg::pipeline_detail {
 void require_configurations(const MeasurementSet& set, planning::Strategy strategy);
 
 /// Strategy 2 labels for the whole set (its visiting path).
-planning::Strategy2Result relabel(const MeasurementSet& set, kinematics::JointNorm norm);
+planning::Strategy2Result relabel(const MeasurementSet& set, kinematics::JointNorm norm,
+                                  const std::optional<kinematics::SerialChain>& robot);
 
 /// Strategy 3: the model from every fiducial of `set` and the registration of the 8 volume
 /// corners; `registered_sensor_m` / `registered_robot_m` receive those 8.

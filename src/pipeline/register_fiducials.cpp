@@ -68,7 +68,7 @@ RegisterResult register_unchecked(const MeasurementSet& input, const RegisterOpt
   const MeasurementSet* set = &input;
   MeasurementSet relabelled;
   if (strategy == Strategy::kAlongPath) {
-    planning::Strategy2Result r = pipeline_detail::relabel(input, options.procedure2.joint_norm);
+    planning::Strategy2Result r = pipeline_detail::relabel(input, options.procedure2.joint_norm, options.robot);
     relabelled = std::move(r.set);
     out.relabelled = r.summary;
     set = &relabelled;
@@ -133,22 +133,22 @@ void RegisterOptions::validate() const {
   const Strategy s = procedure2.strategy;
   const int n = planning::strategy_number(s);
   VRREG_THROW_UNLESS((s != Strategy::kAsListed && s != Strategy::kAlongPath) || config,
-                     "--strategy " << n << " registers one configuration: give --config N");
+                     "`strategy` " << n << " registers one configuration: give `config`");
   VRREG_THROW_UNLESS(s != Strategy::kVolumeCorners || !config,
-                     "--strategy 3 registers every configuration at once; "
-                     "--config N selects targets in evaluate");
+                     "`strategy` 3 registers every configuration at once; "
+                     "`config` selects targets in evaluate");
   VRREG_THROW_UNLESS(s != Strategy::kVolumeCorners || !robust,
-                     "--robust is not available with --strategy 3");
+                     "`robust` is not available with `strategy` 3");
   VRREG_THROW_UNLESS(s != Strategy::kVolumeCorners ||
                          interpolation.method == InterpolationMethod::kLinear ||
                          interpolation.method == InterpolationMethod::kOctuplet,
-                     "--strategy 3 corrects with octuplets (--cube-mm), not --interpolation "
+                     "`strategy` 3 corrects with octuplets (`cube_edge`), not `interpolation` "
                          << to_string(interpolation.method));
   VRREG_THROW_UNLESS(s != Strategy::kAlongPath || !is_field_model(interpolation.method),
-                     "--strategy 2 corrects with the paper's stencils, not --interpolation "
+                     "`strategy` 2 corrects with the paper's stencils, not `interpolation` "
                          << to_string(interpolation.method));
   VRREG_THROW_UNLESS(s == Strategy::kVolumeCorners || !procedure2.seed,
-                     "--seed is for --strategy 3");
+                     "`seed` is for `strategy` 3");
   VRREG_THROW_UNLESS(procedure2.registration_fiducials.empty(),
                      "registration_fiducials are chosen by Strategy 3, not given");
 }
@@ -159,6 +159,14 @@ RegisterResult register_fiducials(const MeasurementSet& fiducials, const Registe
 
 RegisterResult register_fiducials(const MeasuredPoints& fiducials, const RegisterOptions& options) {
   return register_unchecked(fiducials.to_measurement_set(Role::kFiducial, true), options);
+}
+
+RegisterResult register_fiducials(const ConstPoints3Ref& sensor_m, const ConstPoints3Ref& robot_m,
+                                  const RegisterOptions& options) {
+  MeasuredPoints fiducials;
+  fiducials.sensor_m = sensor_m;
+  fiducials.robot_m = robot_m;
+  return register_fiducials(fiducials, options);
 }
 
 }  // namespace vrreg

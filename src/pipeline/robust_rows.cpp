@@ -26,6 +26,7 @@ RobustRows robust_rows(const MeasurementSet& set, const std::vector<std::size_t>
   RobustRows out;
   out.report.detection = detect_outlier_fiducials(robot, eps, groups, noise.sigma_noise_m,
                                                   *options.robust);
+  out.report.false_alarm_rate = options.robust->false_alarm_rate;
   const OutlierDetection& d = out.report.detection;
   if (!d.converged) fail(set, "robust check failed: " + d.message);
   std::size_t next = 0;

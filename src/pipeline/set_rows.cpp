@@ -16,7 +16,7 @@ std::vector<std::size_t> select_rows(const MeasurementSet& set, Role role,
   std::vector<std::size_t> rows = set.select(role, config);
   const std::string what = role == Role::kFiducial ? "fiducial" : "target";
   if (config && !set.has_config) {
-    fail(set, "--config " + std::to_string(*config) + " given but the file has no config column");
+    fail(set, "`config` " + std::to_string(*config) + " given but the file has no config column");
   }
   if (rows.empty()) {
     fail(set, "no " + what + " rows" +

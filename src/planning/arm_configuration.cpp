@@ -23,8 +23,8 @@ IkResult all_solutions(const kinematics::SerialChain& chain, const Eigen::Vector
                                         ik);
 }
 
-JointChoice from_result(const IkResult& r, const kinematics::JointRef* reference,
-                        kinematics::JointNorm norm) {
+JointChoice from_result(const kinematics::SerialChain& chain, const IkResult& r,
+                        const kinematics::JointRef* reference, kinematics::JointNorm norm) {
   JointChoice choice;
   choice.status = r.status;
   choice.message = r.message;
@@ -39,7 +39,8 @@ JointChoice from_result(const IkResult& r, const kinematics::JointRef* reference
   choice.q_rad = s.q_rad;
   choice.config = s.config;
   if (reference != nullptr)
-    choice.distance_rad = kinematics::joint_distance(s.q_rad, *reference, norm);
+    choice.distance_rad = kinematics::joint_distance(s.q_rad, *reference, norm,
+                                                     kinematics::JointKinds(chain));
   return choice;
 }
 
@@ -72,7 +73,8 @@ JointChoice part_joints(const kinematics::SerialChain& chain, const Eigen::Vecto
                         const ArmConfigurationOptions& options) {
   if (options.home_q_rad) return nearest_joints(chain, point_base_m, *options.home_q_rad, options);
   // Solutions come ordered by configuration index, shifted into the limits: take the first.
-  return from_result(all_solutions(chain, point_base_m, options, true), nullptr, options.norm);
+  return from_result(chain, all_solutions(chain, point_base_m, options, true), nullptr,
+                     options.norm);
 }
 
 JointChoice nearest_joints(const kinematics::SerialChain& chain,
@@ -88,7 +90,7 @@ JointChoice nearest_joints(const kinematics::SerialChain& chain,
                                                       reference_q_rad, options.norm)
           : kinematics::nearest_solution(chain, all_solutions(chain, point_base_m, options, false),
                                          reference_q_rad, options.norm);
-  return from_result(nearest, &reference_q_rad, options.norm);
+  return from_result(chain, nearest, &reference_q_rad, options.norm);
 }
 
 }  // namespace vrreg::planning

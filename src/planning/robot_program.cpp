@@ -38,7 +38,7 @@ void check_locations(const std::vector<ProgramLocation>& locations) {
 std::string urscript(const std::vector<ProgramLocation>& locations, const ProgramOptions& o) {
   VRREG_THROW_UNLESS(locations.front().q_rad.size() == 6,
                      "URScript is for 6-joint UR arms; the plan has "
-                         << locations.front().q_rad.size() << " joints (use --export krl or csv)");
+                         << locations.front().q_rad.size() << " joints (use `export` krl or csv)");
   std::string s;
   s += fmt::format(
       "# {} locations in visiting order; at each: movej, settle {} s, then a blocking\n",

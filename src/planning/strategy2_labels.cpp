@@ -20,7 +20,8 @@ double Strategy2Summary::switched_locations_fraction() const {
                           : static_cast<double>(n_switched) / static_cast<double>(n_locations);
 }
 
-Strategy2Result relabel_strategy2(const MeasurementSet& set, kinematics::JointNorm norm) {
+Strategy2Result relabel_strategy2(const MeasurementSet& set, kinematics::JointNorm norm,
+                                  const kinematics::JointKinds& kinds) {
   VRREG_THROW_UNLESS(set.has_config,
                      "Strategy 2 needs a config column (the arm configuration of each row)");
   VRREG_THROW_UNLESS(set.n_joints > 0,
@@ -50,7 +51,7 @@ Strategy2Result relabel_strategy2(const MeasurementSet& set, kinematics::JointNo
           Eigen::Map<const Eigen::VectorXd>(loc.q_rad.data(), set.n_joints);
     }
   }
-  const kinematics::PathRelabelling relabelled = kinematics::relabel_along_path(path, norm);
+  const kinematics::PathRelabelling relabelled = kinematics::relabel_along_path(path, norm, kinds);
 
   Strategy2Result out{set, {}};
   out.summary.norm = norm;

@@ -76,7 +76,7 @@ void Strategy3CorrectionOptions::validate() const {
       "Strategy 3: the match tolerance must be > 0, got " << match_tolerance_m << " m");
   VRREG_THROW_UNLESS(std::isfinite(cube_edge_m) && cube_edge_m > 4.0 * match_tolerance_m,
                      "Strategy 3 corrects with octuplets and needs a cube edge (got "
-                         << units::m_to_mm(cube_edge_m) << " mm): set --cube-mm");
+                         << units::m_to_mm(cube_edge_m) << " mm): set `cube_edge`");
 }
 
 std::vector<Stencil> nearest_configuration_stencils(const std::vector<Location>& fiducials,

@@ -330,8 +330,8 @@ MarkerOffsetResult estimate_marker_offset(const std::vector<Eigen::Isometry3d>& 
                "(spread "
             << out.orientation_spread << " rad about the least-tilted axis, below "
             << options.min_orientation_spread
-            << "); visit positions with the flange tilted about two axes (vrreg plan "
-               "--offset-tilt-deg), or give the offset";
+            << "); visit positions with the flange tilted about two axes (plan with "
+               "`offset_tilt`), or give the offset";
     out.status = MarkerOffsetStatus::kUnobservable;
     out.message = message.str();
     return out;

@@ -48,14 +48,19 @@ ReportTable summary_table(const CellReportInput& in, const CellAnalysis& a) {
       {"σ_rep (robot repeatability)", opt_mm(a.noise.sigma_rep_m)},
       {"σ_noise (Eq. 9)", opt_mm(a.noise.sigma_noise_m)},
       {"ρ = σ_L / σ_noise", a.noise.rho ? num(*a.noise.rho, 2) : "—"},
-      {"targets evaluated (N)", std::to_string(s.n_targets)},
+      {"targets evaluated (N)", std::to_string(in.evaluation.n_targets())},
       {"interpolation", std::string(to_string(in.evaluation.correction.method_used)) + ": " +
                             in.evaluation.correction.layout},
-      {"uncorrected RMS_T (Eq. 4)", mm(s.unc_rms_t_m)},
-      {"corrected RMS_T (RRBC, Eq. 7-8)", mm(s.cor_rms_t_m)},
-      {"γ = (unc − cor) / unc", num(100.0 * s.gamma, 1) + " %"},
+      {"targets corrected (the figures below are theirs)", std::to_string(s.n_targets)},
+      {"uncorrected RMS_T (Eq. 4)", s.n_targets > 0 ? mm(s.unc_rms_t_m) : "—"},
+      {"corrected RMS_T (RRBC, Eq. 7-8)", s.n_targets > 0 ? mm(s.cor_rms_t_m) : "—"},
+      {"γ = (unc − cor) / unc", s.n_targets > 0 ? num(100.0 * s.gamma, 1) + " %" : "—"},
       {"N_bad (TRE got worse)", std::to_string(s.n_bad) + " of " + std::to_string(s.n_targets)},
-      {"not correctable (left uncorrected)", std::to_string(in.evaluation.correction.n_flagged)},
+      {"not correctable (left uncorrected)",
+       std::to_string(in.evaluation.correction.n_flagged) +
+           (in.evaluation.correction.n_flagged > 0
+                ? ", RMS_T " + mm(in.evaluation.flagged_rms_t_m) + " as registered"
+                : "")},
   };
   const EvaluateResult& e = in.evaluation;
   if (e.calibration.n > 0) {  // a field model: its predicted uncertainty, and how honest it was

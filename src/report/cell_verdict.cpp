@@ -17,8 +17,8 @@ ReportVerdict rho_verdict(const CellAnalysis& a) {
   if (!a.noise.rho) {
     return {Tone::kInfo,
             fmt::format("ρ unknown: σ_L = {:.3f} mm, but the fiducials have no repeat readings to "
-                        "estimate the sensor noise and no robot repeatability was given "
-                        "(--sigma-rep-mm), so ρ = σ_L / σ_noise cannot be judged against 2.5.",
+                        "estimate the sensor noise and no robot repeatability σ_rep was given, "
+                        "so ρ = σ_L / σ_noise cannot be judged against 2.5.",
                         sl)};
   }
   const double noise = *a.noise.sigma_noise_m * 1e3;
@@ -44,8 +44,15 @@ std::vector<ReportVerdict> cell_verdict(const CellReportInput& input, const Cell
   const ImprovementSummary& s = a.summary;
   const double unc = s.unc_rms_t_m * 1e3;
   const double cor = s.cor_rms_t_m * 1e3;
+  const int n_flagged = input.evaluation.correction.n_flagged;
+  const std::string flagged_text =
+      std::to_string(n_flagged) + " of " + std::to_string(input.evaluation.n_targets()) +
+      fmt::format(" targets could not be corrected (no fiducials around them, or too few "
+                  "fiducials); they are left uncorrected (RMS_T {:.3f} mm as registered) and "
+                  "are not in the figures above.",
+                  input.evaluation.flagged_rms_t_m * 1e3);
   if (s.n_targets == 0) {
-    v.push_back({Tone::kWarn, "No targets were evaluated."});
+    v.push_back({Tone::kWarn, n_flagged > 0 ? flagged_text : "No targets were evaluated."});
     return v;
   }
   const std::string n = std::to_string(s.n_targets);
@@ -78,17 +85,19 @@ std::vector<ReportVerdict> cell_verdict(const CellReportInput& input, const Cell
              fmt::format(", +{:.3f} mm). ", (a.cor_tre_m[worst] - a.unc_tre_m[worst]) * 1e3) +
              "Where: " + a.where_bad + "."});
   }
-  if (input.evaluation.correction.n_flagged > 0) {
-    v.push_back({Tone::kWarn, std::to_string(input.evaluation.correction.n_flagged) + " of " + n +
-                                  " targets could not be corrected (no fiducials around them) and "
-                                  "count with their uncorrected error."});
+  if (n_flagged > 0) v.push_back({Tone::kWarn, flagged_text});
+  // The largest TRE among the corrected targets (a flagged one's is not a corrected TRE).
+  Eigen::Index worst = -1;
+  for (Eigen::Index k = 0; k < a.cor_tre_m.size(); ++k) {
+    if (!is_corrected(input.evaluation.correction.stencils[static_cast<std::size_t>(k)].status))
+      continue;
+    if (worst < 0 || a.cor_tre_m[k] > a.cor_tre_m[worst]) worst = k;
   }
-  if (s.n_targets > 0) {
-    Eigen::Index k = 0;
-    const double worst = a.cor_tre_m.maxCoeff(&k);
-    v.push_back({Tone::kInfo, fmt::format("Largest corrected TRE: {:.3f} mm", worst * 1e3) +
-                                  " at " + a.labels[static_cast<std::size_t>(k)] +
-                                  fmt::format(" (uncorrected {:.3f} mm).", a.unc_tre_m[k] * 1e3)});
+  if (worst >= 0) {
+    v.push_back({Tone::kInfo,
+                 fmt::format("Largest corrected TRE: {:.3f} mm", a.cor_tre_m[worst] * 1e3) +
+                     " at " + a.labels[static_cast<std::size_t>(worst)] +
+                     fmt::format(" (uncorrected {:.3f} mm).", a.unc_tre_m[worst] * 1e3)});
   }
   return v;
 }

@@ -145,7 +145,7 @@ std::string export_model(const RegistrationModel& model, ExportFormat format) {
   VRREG_THROW_UNLESS(model.T_robot_sensor.scale == 1.0,
                      "export: the model has a scale (" << model.T_robot_sensor.scale
                                                        << "): a similarity, not a rigid transform; "
-                                                          "register without --scale");
+                                                          "register without `scale`");
   const RigidTransform T = model.T_robot_sensor.rigid();
   switch (format) {
     case ExportFormat::kYaml:

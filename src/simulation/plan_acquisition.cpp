@@ -26,7 +26,7 @@ void check_location(const Testbed& testbed, const CommandedLocation& c, bool wit
                      "plan location '" << c.point << "': its joints put the " << testbed.name
                                        << " test bed's TCP " << 1e3 * (tcp - c.robot_m).norm()
                                        << " mm from its robot position (a plan for another robot "
-                                          "or tool? plan with --robot "
+                                          "or tool? plan with `robot` "
                                        << testbed.name << ")");
 }
 

@@ -88,6 +88,31 @@ TEST_F(HandEyeCli, PlanSimulateRegisterEvaluateExport) {
   EXPECT_NE(read_text(dir_ / "cell.urdf").find("robot_base_to_sensor"), std::string::npos);
 }
 
+// Every register path that uses a robot keeps it (to the marker) in the model, so that evaluate's
+// joint model (and auto, which weighs it) never asks for --robot again.
+TEST_F(HandEyeCli, EveryRegisterPathWithARobotKeepsIt) {
+  ASSERT_EQ(run_vrreg("plan --parts " + p("parts.csv") +
+                      " --robot ur5 --halfwidth-mm 20 --spacing-mm 20 --offset-tilt-deg 20 -o " +
+                      p("plan.csv"))
+                .status,
+            0);
+  ASSERT_EQ(run_vrreg("simulate ur5 --plan " + p("plan.csv") + " --unknown-marker --seed 1 -o " +
+                      p("cell.csv"))
+                .status,
+            0);
+  for (const std::string how : {"--robot ur5", "--marker-offset-mm 35 -25 85 --robot ur5",
+                                "--estimate-marker-offset --robot ur5"}) {
+    const CliResult reg = run_vrreg("register --fiducials " + p("cell.csv") + " " + how + " -o " +
+                                    p("m.json"));
+    ASSERT_EQ(reg.status, 0) << how << ": " << reg.err;
+    EXPECT_TRUE(json::parse(read_text(dir_ / "m.json")).contains("robot")) << how;
+    const CliResult eval = run_vrreg("evaluate --model " + p("m.json") + " --targets " +
+                                     p("cell.csv") + " --interpolation joint --json");
+    ASSERT_EQ(eval.status, 0) << how << ": " << eval.err;
+    EXPECT_EQ(json::parse(eval.out)["interpolation"], "joint") << how;
+  }
+}
+
 TEST_F(HandEyeCli, OneOrientationIsRefusedAsUnobservable) {
   ASSERT_EQ(run_vrreg("simulate ur5 A2 --unknown-marker --seed 2 -o " + p("a2.csv")).status, 0);
   const CliResult reg = run_vrreg("register --fiducials " + p("a2.csv") +

@@ -49,8 +49,12 @@ TEST_F(SmallCellCli, EvaluateReportsTheUncorrectedTreAndWhy) {
     const json e = json::parse(eval.out);
     EXPECT_EQ(e["n_targets"].get<int>(), 4) << method;
     EXPECT_EQ(e["n_flagged"].get<int>(), 4) << method;
-    EXPECT_GT(e["unc_rms_t_mm"].get<double>(), 0.0) << method;
-    EXPECT_EQ(e["cor_rms_t_mm"].get<double>(), e["unc_rms_t_mm"].get<double>()) << method;
+    EXPECT_EQ(e["n_corrected"].get<int>(), 0) << method;
+    // The uncorrected error comes out on its own; no corrected figure is made up.
+    EXPECT_GT(e["flagged_rms_t_mm"].get<double>(), 0.0) << method;
+    EXPECT_TRUE(e["unc_rms_t_mm"].is_null()) << method;
+    EXPECT_TRUE(e["cor_rms_t_mm"].is_null()) << method;
+    EXPECT_TRUE(e["gamma_percent"].is_null()) << method;
     const std::string layout = e["layout"].get<std::string>();
     EXPECT_NE(layout.find("3 fiducials are fewer than any correction method needs"),
               std::string::npos) << layout;
@@ -61,6 +65,8 @@ TEST_F(SmallCellCli, EvaluateReportsTheUncorrectedTreAndWhy) {
   ASSERT_EQ(text.status, 0) << text.err;
   EXPECT_NE(text.out.find("not correctable               4 targets (too few fiducials"),
             std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("no target was corrected"), std::string::npos) << text.out;
+  EXPECT_EQ(text.out.find("gamma ="), std::string::npos) << text.out;
   const std::string per_target = read_text(dir_ / "pt.csv");
   EXPECT_NE(per_target.find("T1,,too few fiducials,"), std::string::npos) << per_target;
 }

@@ -145,7 +145,7 @@ TEST_F(StrategyCli, BadInputNamesTheFile) {
                "joint columns");
   expect_fails("register --fiducials " + q(jointless) + " --strategy 3", jointless,
                "joint columns");
-  expect_fails("register --fiducials " + q(cell_) + " --strategy 2", cell_, "--config N");
+  expect_fails("register --fiducials " + q(cell_) + " --strategy 2", cell_, "give --config");
   expect_fails("register --fiducials " + q(cell_) + " --strategy 3 --config 1", cell_, "--config");
   expect_fails("register --fiducials " + q(cell_) + " --strategy 1 --config 1 --seed 3", cell_,
                "--seed");

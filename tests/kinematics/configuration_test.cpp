@@ -81,6 +81,28 @@ TEST(JointDistance, NearestAndOrderDependOnTheNorm) {
   EXPECT_FALSE(nearest_configuration(Eigen::MatrixXd(3, 0), reference, JointNorm::kL2));
 }
 
+// A gantry's 8 m carriage then two revolute joints: the carriage's travel is metres, not an angle
+// (wrapped, 6.4 m - 0.1 m would be 0.017 "rad" and the far carriage position the nearest).
+TEST(JointDistance, SlidesAreNotWrapped) {
+  DhRow slide;
+  slide.type = JointType::kPrismatic;
+  DhRow turn;
+  turn.a_m = 0.5;
+  const SerialChain gantry("gantry", {slide, turn, turn}, {{0.0, 8.0}, {-kPi, kPi}, {-kPi, kPi}});
+  const JointKinds kinds(gantry);
+  Eigen::Vector3d a(0.1, kPi - 0.1, 0.0), b(6.4, -kPi + 0.1, 0.0);
+  EXPECT_NEAR(joint_distance_linf(a, b, kinds), 6.3, 1e-12);
+  EXPECT_NEAR(joint_distance_l2(a, b, kinds), std::sqrt(6.3 * 6.3 + 0.2 * 0.2), 1e-12);
+  EXPECT_NEAR(joint_distance_linf(a, b), 0.2, 1e-12);  // as an angle the 6.3 m wraps to 0.017
+  EXPECT_NEAR(kinds.difference(1, a(1), b(1)), -0.2, 1e-12);
+  Eigen::MatrixXd candidates(3, 2);
+  candidates.col(0) = b;
+  candidates.col(1) = Eigen::Vector3d(0.6, kPi - 0.1, 0.0);
+  EXPECT_EQ(*nearest_configuration(candidates, a, JointNorm::kL2, kinds), 1);
+  EXPECT_EQ(*nearest_configuration(candidates, a, JointNorm::kL2), 0);
+  EXPECT_EQ(order_by_distance(candidates, a, JointNorm::kLinf, kinds), (std::vector<int>{1, 0}));
+}
+
 TEST(JointDistance, ShiftsIntoLimits) {
   const SerialChain chain = ur5();
   Eigen::VectorXd q = Eigen::VectorXd::Zero(6);
@@ -102,7 +124,7 @@ TEST(InverseKinematics, DispatchesByFamily) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.translation() << 0.3, 0.2, 0.4;
   EXPECT_NO_THROW(inverse_kinematics(ur5(), t));
-  EXPECT_THROW(inverse_kinematics(lwr4(), t), InputError);  // needs psi
+  EXPECT_NO_THROW(inverse_kinematics(lwr4(), t));  // the arm angle free
   EXPECT_NO_THROW(inverse_kinematics(lwr4(), t, 0.3));
   std::vector<DhRow> rows = ur5().rows();
   rows[0].a_m = 0.05;

@@ -90,6 +90,33 @@ TEST_P(Extrapolation, FarTargetsAreFlaggedOrCorrectedWithAnSdThatCoversTheError)
   EXPECT_LT(rms_z, 1.5);
 }
 
+// The summary is over the corrected targets only: the three far targets, left uncorrected, are
+// counted apart with their own RMS_T and never enter RMS_T, gamma or N_bad. Extrapolated targets
+// were corrected and count.
+TEST(EvaluateSummary, NeverMixesCorrectedAndUncorrectedTargets) {
+  const Cube cube;
+  const RegisterResult r = register_fiducials(cube.fiducials);
+  EvaluateOptions options;
+  options.interpolation.method = InterpolationMethod::kRbf;
+  const EvaluateResult e = evaluate(r.model, cube.targets, options);
+  ASSERT_EQ(e.correction.n_flagged, 3);
+  EXPECT_EQ(e.n_targets(), 4);
+  EXPECT_EQ(e.summary.n_targets, 1);
+  EXPECT_EQ(e.summary.unc_rms_t_m, e.unc_tre_m(0));
+  EXPECT_EQ(e.summary.cor_rms_t_m, e.cor_tre_m(0));
+  EXPECT_EQ(e.summary.cor_max_tre_m, e.cor_tre_m(0));
+  EXPECT_DOUBLE_EQ(e.summary.gamma, 1.0 - e.cor_tre_m(0) / e.unc_tre_m(0));
+  const Eigen::Vector3d far = e.unc_tre_m.tail(3);
+  EXPECT_DOUBLE_EQ(e.flagged_rms_t_m, std::sqrt(far.squaredNorm() / 3.0));
+  for (const int k : e.summary.bad_targets) EXPECT_EQ(k, 0);
+
+  options.extrapolate = true;
+  const EvaluateResult x = evaluate(r.model, cube.targets, options);
+  EXPECT_EQ(x.summary.n_targets, 4);
+  EXPECT_EQ(x.flagged_rms_t_m, 0.0);
+  EXPECT_DOUBLE_EQ(x.summary.cor_rms_t_m, std::sqrt(x.cor_tre_m.squaredNorm() / 4.0));
+}
+
 INSTANTIATE_TEST_SUITE_P(FieldModels, Extrapolation,
                          ::testing::Values(InterpolationMethod::kKriging,
                                            InterpolationMethod::kRbf),

@@ -74,6 +74,21 @@ TEST_F(FrontDoor, RegistersAsUmeyamaAndKeepsTheRigidBodyStatistics) {
   EXPECT_EQ(r.model.fiducials[7].point, "8") << "default names count from 1";
 }
 
+// Two point sets as Eigen::umeyama(src, dst) takes them, views into larger matrices included.
+TEST_F(FrontDoor, RegistersTwoPointSetsAsUmeyamaDoes) {
+  Eigen::MatrixXd both(6, fiducials.size() + 1);
+  both.topLeftCorner(3, fiducials.size()) = fiducials.sensor_m;
+  both.bottomLeftCorner(3, fiducials.size()) = fiducials.robot_m;
+  const RegisterResult r = register_fiducials(both.topLeftCorner(3, fiducials.size()),
+                                              both.bottomLeftCorner(3, fiducials.size()),
+                                              {.sigma_rep_m = 5e-5});
+  const RegisterResult same = register_fiducials(fiducials, {.sigma_rep_m = 5e-5});
+  EXPECT_EQ(r.model.T_robot_sensor.rotation, same.model.T_robot_sensor.rotation);
+  EXPECT_EQ(r.model.T_robot_sensor.translation_m, same.model.T_robot_sensor.translation_m);
+  EXPECT_EQ(r.rigid_body.sigma_l_m, same.rigid_body.sigma_l_m);
+  EXPECT_EQ(r.noise.sigma_noise_m, same.noise.sigma_noise_m);
+}
+
 TEST_F(FrontDoor, EvaluateAndCorrectAgreeAndRrbcHelps) {
   const RegisterResult r = register_fiducials(fiducials);
   const EvaluateResult e = evaluate(r.model, targets);

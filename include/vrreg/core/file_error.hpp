@@ -18,8 +18,8 @@ class FileError : public InputError {
   [[nodiscard]] std::size_t line() const { return line_; }
 
  private:
-  std::string path_;
-  std::size_t line_;
+  std::string path_{};
+  std::size_t line_{};
 };
 
 }  // namespace vrreg

@@ -33,11 +33,11 @@ class ProgressStage {
   void advance(std::int64_t steps = 1);
 
  private:
-  std::string name_;
-  std::int64_t total_;
+  std::string name_{};
+  std::int64_t total_{};
   std::atomic<std::int64_t> done_{0};
-  std::chrono::steady_clock::time_point start_;
-  bool active_;
+  std::chrono::steady_clock::time_point start_{};
+  bool active_{};
 };
 
 }  // namespace vrreg

@@ -33,8 +33,8 @@ class Random {
   [[nodiscard]] static Random stream(std::uint64_t seed, std::uint64_t index);
 
  private:
-  std::mt19937_64 engine_;
-  std::uint64_t seed_;
+  std::mt19937_64 engine_{};
+  std::uint64_t seed_{};
   bool has_spare_ = false;
   double spare_ = 0.0;
 };

@@ -39,7 +39,7 @@ class CornerCandidates {
 
  private:
   struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Impl> impl_{};
   double tolerance_m_ = 0.0;
 };
 

@@ -14,26 +14,26 @@ namespace vrreg {
 /// What RRBC interpolates (Eq. 6-8): the registration and, per fiducial, its nominal robot
 /// position, its correction and where it was read.
 struct CorrectionField {
-  SimilarityTransform T_robot_sensor;  ///< Y ~ R X + tau (Eq. 2)
-  Points3 fiducials_robot_m;      ///< nominal robot positions of the fiducials [m]
-  Points3 corrections_sensor_m;   ///< epsilon_j (Eq. 6) per fiducial, sensor frame [m]
+  SimilarityTransform T_robot_sensor{};  ///< Y ~ R X + tau (Eq. 2)
+  Points3 fiducials_robot_m{};      ///< nominal robot positions of the fiducials [m]
+  Points3 corrections_sensor_m{};   ///< epsilon_j (Eq. 6) per fiducial, sensor frame [m]
   /// Where each fiducial was read (its file line: the visiting order), or empty when unknown.
-  std::vector<std::size_t> fiducials_sequence;
+  std::vector<std::size_t> fiducials_sequence{};
 };
 
 /// Result of correct_targets; every per-target vector has one entry per target.
 struct TargetCorrection {
   InterpolationMethod method_used = InterpolationMethod::kLinear;  ///< never kAuto after a call
-  std::string layout;  ///< what was used, e.g. "grid 6 x 7 x 5 nodes, 50 mm (every 2nd fiducial)"
-  std::vector<Stencil> stencils;
-  Points3 corrections_sensor_m;  ///< epsilon(T_X) per target (zero where status != kOk)
-  Points3 corrected_sensor_m;    ///< T_X + epsilon(T_X) (Eq. 8)
-  Points3 corrected_robot_m;     ///< R (T_X + epsilon) + tau; uncorrected mapping where flagged
-  Points3 uncorrected_robot_m;   ///< R T_X + tau
+  std::string layout{};  ///< what was used, e.g. "grid 6 x 7 x 5 nodes, 50 mm (every 2nd fiducial)"
+  std::vector<Stencil> stencils{};
+  Points3 corrections_sensor_m{};  ///< epsilon(T_X) per target (zero where status != kOk)
+  Points3 corrected_sensor_m{};    ///< T_X + epsilon(T_X) (Eq. 8)
+  Points3 corrected_robot_m{};     ///< R (T_X + epsilon) + tau; uncorrected mapping where flagged
+  Points3 uncorrected_robot_m{};   ///< R T_X + tau
   int n_flagged = 0;             ///< targets with status != kOk
   /// Field models (docs/field-models.md): the predicted standard uncertainty of each corrected
   /// target's 3D error [m] (NaN where flagged); empty for the paper's stencils.
-  Eigen::VectorXd predicted_sd_m;
+  Eigen::VectorXd predicted_sd_m{};
 };
 
 /// Corrects targets measured in the sensor frame with the fiducial corrections of `field`.

@@ -37,7 +37,7 @@ struct MethodQuery {
   ConstPoints3Ref registered_robot_m;  ///< R X + tau of each point, robot frame [m]
   ConstPoints3Ref robot_nominal_m;     ///< nominal robot positions [m], or 3 x 0 when not needed
   Eigen::Ref<const Eigen::MatrixXd> joints_rad;  ///< commanded joints [rad], or 0 x 0
-  std::span<const std::size_t> sequence;  ///< where each point was read (file line), or empty
+  std::span<const std::size_t> sequence{};  ///< where each point was read (file line), or empty
   /// Predict beyond the method's support too (a field model's table samples its edge nodes
   /// there, so that interpolation up to the support's face sees the model, not zeros).
   bool beyond_support = false;
@@ -45,13 +45,13 @@ struct MethodQuery {
 
 /// A method's predictions for n points, sized by the caller; predict() fills a range of them.
 struct MethodPredictions {
-  Points3 corrections_sensor_m;  ///< epsilon(T_X) (Eq. 7), sensor frame [m]; 0 where not ok
+  Points3 corrections_sensor_m{};  ///< epsilon(T_X) (Eq. 7), sensor frame [m]; 0 where not ok
   /// Per point: status (kOk or why there is no prediction) and, for the paper's stencils, the
   /// fiducials and weights of Eq. 7.
-  std::vector<Stencil> stencils;
+  std::vector<Stencil> stencils{};
   /// The predicted standard uncertainty of a corrected point's 3D error [m], for methods with
   /// their own (kriging); empty otherwise.
-  Eigen::VectorXd sd_m;
+  Eigen::VectorXd sd_m{};
 };
 
 /// Settings a method is fitted with: the model's interpolation settings and Procedure 2's.
@@ -60,7 +60,7 @@ struct MethodSettings {
   double match_tolerance_m = 1e-6;  ///< how close a fiducial must be to a corner or node [m]
   /// Strategy 3 (paper section 4.4): each octuplet corner in the configuration whose joints are
   /// nearest the target's, by this norm.
-  std::optional<kinematics::JointNorm> nearest_configuration;
+  std::optional<kinematics::JointNorm> nearest_configuration{};
 };
 
 class FittedMethod;
@@ -68,8 +68,8 @@ class FittedMethod;
 /// What fitting gives: the fitted method, or why the method does not apply to these fiducials
 /// (a value, e.g. "fewer than 12 fiducials"; a failure inside a fit is an exception instead).
 struct FitOutcome {
-  std::unique_ptr<const FittedMethod> fitted;
-  std::string not_applicable;  ///< empty when fitted
+  std::unique_ptr<const FittedMethod> fitted{};
+  std::string not_applicable{};  ///< empty when fitted
 };
 
 /// A correction method fitted on one registration's fiducials. Immutable: every member function

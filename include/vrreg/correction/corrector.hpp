@@ -26,9 +26,9 @@ namespace vrreg {
 struct CorrectorOptions {
   /// The method (kLinear: grid on a complete regular grid, else scattered; kAuto: the lowest
   /// cross-validated error), the octuplet cube edge and the match tolerance.
-  InterpolationSettings interpolation;
+  InterpolationSettings interpolation{};
   /// Strategy 3 (paper section 4.4): octuplet corners in the configuration nearest the target's.
-  std::optional<kinematics::JointNorm> nearest_configuration;
+  std::optional<kinematics::JointNorm> nearest_configuration{};
   int cv_folds = 5;           ///< cross-validation of `auto` and of the field models' sd
   std::uint64_t cv_seed = 1;  ///< of the shuffle that deals fiducials to folds
   /// Kriging and RBF correct from a table of the fitted field (tricubic, its deviation from the
@@ -59,7 +59,7 @@ struct CorrectionQuery {
   ConstPoints3Ref sensor_m;            ///< measured positions, sensor frame [m]
   ConstPoints3Ref robot_nominal_m;     ///< nominal robot positions [m] (octuplet, Strategy 3)
   Eigen::Ref<const Eigen::MatrixXd> joints_rad;  ///< commanded joints [rad] (joint, Strategy 3)
-  std::span<const std::size_t> sequence;  ///< where each point was read (file line), or empty
+  std::span<const std::size_t> sequence{};  ///< where each point was read (file line), or empty
   /// Correct points outside a field model's support too (status kExtrapolated) instead of
   /// leaving them uncorrected: with the correction at the support's nearest point and an sd
   /// widened by the field's gradient over the distance, up to the field's own spread (what a
@@ -69,17 +69,17 @@ struct CorrectionQuery {
 
 /// A corrector's saved form: everything restore() needs besides the fiducials it was fitted on.
 struct SavedCorrector {
-  InterpolationSettings requested;  ///< as asked (e.g. kAuto or kLinear)
-  std::optional<kinematics::JointNorm> nearest_configuration;
+  InterpolationSettings requested{};  ///< as asked (e.g. kAuto or kLinear)
+  std::optional<kinematics::JointNorm> nearest_configuration{};
   int cv_folds = 5;
   std::uint64_t cv_seed = 1;
   InterpolationMethod method = InterpolationMethod::kLinear;  ///< as fitted
-  MethodState state;                ///< the fitted method's own state
-  std::optional<CrossValidation> cross_validation;  ///< `auto`'s table
+  MethodState state{};                ///< the fitted method's own state
+  std::optional<CrossValidation> cross_validation{};  ///< `auto`'s table
   SdSource sd_source = SdSource::kNone;
   double cv_rms_m = 0.0;  ///< the method's cross-validated RMS (kGlobalCv, kLocalCv) [m]
   /// Held-out squared error (3D) per fiducial [m^2], NaN where not predicted (kLocalCv).
-  Eigen::VectorXd cv_squared_error_m2;
+  Eigen::VectorXd cv_squared_error_m2{};
 };
 
 /// A correction method fitted on one registration's fiducials (see the file comment).
@@ -124,7 +124,7 @@ class Corrector {
  private:
   struct Impl;
   explicit Corrector(std::shared_ptr<const Impl> impl);
-  std::shared_ptr<const Impl> impl_;
+  std::shared_ptr<const Impl> impl_{};
 };
 
 }  // namespace vrreg

@@ -14,18 +14,18 @@ namespace vrreg {
 
 /// The fiducials of one registration as every correction method sees them, one column each.
 struct CorrectorData {
-  SimilarityTransform T_robot_sensor;  ///< Y ~ R X + tau (Eq. 2)
-  Points3 fiducials_robot_m;           ///< nominal Y_j, robot frame [m]
-  Points3 registered_robot_m;          ///< R X_j + tau, robot frame [m]
-  Points3 corrections_sensor_m;        ///< epsilon_j (Eq. 6), sensor frame [m]
+  SimilarityTransform T_robot_sensor{};  ///< Y ~ R X + tau (Eq. 2)
+  Points3 fiducials_robot_m{};           ///< nominal Y_j, robot frame [m]
+  Points3 registered_robot_m{};          ///< R X_j + tau, robot frame [m]
+  Points3 corrections_sensor_m{};        ///< epsilon_j (Eq. 6), sensor frame [m]
   /// Where each fiducial was read (its file line: the visiting order), or empty when unknown.
-  std::vector<std::size_t> sequence;
-  Eigen::MatrixXd joints_rad;  ///< joint angles, one column per fiducial, or 0 x 0 without
+  std::vector<std::size_t> sequence{};
+  Eigen::MatrixXd joints_rad{};  ///< joint angles, one column per fiducial, or 0 x 0 without
   /// Arm configuration labels (Strategy 3 keeps every configuration), or empty.
-  std::vector<std::optional<int>> configs;
-  std::optional<kinematics::SerialChain> robot;  ///< the arm the joints belong to (to the marker)
+  std::vector<std::optional<int>> configs{};
+  std::optional<kinematics::SerialChain> robot{};  ///< the arm the joints belong to (to the marker)
   /// The measured noise of one fiducial's averaged reading per axis (Eq. 9) [m], when known.
-  std::optional<double> noise_sd_m;
+  std::optional<double> noise_sd_m{};
 
   /// Data of fiducials measured at `fiducials_sensor_m` and commanded to `fiducials_robot_m`
   /// [m], with their corrections (Eq. 6): the registered positions are T applied to the former.

@@ -26,7 +26,7 @@ inline constexpr Eigen::Index kLargeCellHeldOut = 2000;
 struct CrossValidationRow {
   InterpolationMethod method = InterpolationMethod::kTrilinear;
   bool applicable = false;  ///< false: `note` says why (e.g. no joints, not a lattice)
-  std::string note;
+  std::string note{};
   double rms_m = 0.0;  ///< RMS over the predicted fiducials of |predicted - measured| (3D) [m]
   Eigen::Vector3d rms_axis_m = Eigen::Vector3d::Zero();  ///< the same per sensor axis [m]
   Eigen::Index n_predicted = 0;  ///< fiducials the held-out models could predict
@@ -36,7 +36,7 @@ struct CrossValidationRow {
   /// RMS (3D) over the fiducials every compared method predicted: what `auto` compares [m].
   double rms_common_m = 0.0;
   /// |predicted - measured|^2 per fiducial [m^2]; NaN where not predicted.
-  Eigen::VectorXd squared_error_m2;
+  Eigen::VectorXd squared_error_m2{};
   double seconds = 0.0;  ///< fit and predict over all folds (wall time)
 };
 
@@ -51,7 +51,7 @@ struct CrossValidation {
   /// Fold units: fiducials dealt to folds together (clusters; == the fiducial count when every
   /// fiducial stands alone, as on a lattice).
   Eigen::Index n_units = 0;
-  std::vector<CrossValidationRow> rows;
+  std::vector<CrossValidationRow> rows{};
   InterpolationMethod chosen = InterpolationMethod::kTrilinear;
 };
 

@@ -12,8 +12,8 @@ namespace vrreg {
 /// Tetrahedra over a point set: vertex columns and, opposite vertex k, the neighbour across
 /// face k (-1 on the convex hull). Cospherical input (grids) may give flat tetrahedra.
 struct Tetrahedralization {
-  std::vector<std::array<Eigen::Index, 4>> vertices;
-  std::vector<std::array<Eigen::Index, 4>> neighbours;
+  std::vector<std::array<Eigen::Index, 4>> vertices{};
+  std::vector<std::array<Eigen::Index, 4>> neighbours{};
 };
 
 /// Delaunay tetrahedralization of points_m [m] by qhull ("d Qbb Qc Qz Q12 Qt": triangulated,

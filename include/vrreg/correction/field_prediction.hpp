@@ -8,10 +8,10 @@ namespace vrreg {
 
 /// Prediction of a 3-vector field at N query points; column n belongs to query point n.
 struct FieldPrediction {
-  Points3 mean_m;  ///< predicted field value per axis [m]
+  Points3 mean_m{};  ///< predicted field value per axis [m]
   /// Predicted standard deviation of the latent field per axis [m]: without the measurement
   /// noise (nugget) of a new observation, which the caller adds in quadrature if it needs it.
-  Points3 sd_m;
+  Points3 sd_m{};
 };
 
 }  // namespace vrreg

@@ -17,9 +17,9 @@ namespace vrreg {
 /// The base lattice of a layout with a correction at every node it could give one.
 struct FilledLattice {
   /// The lattice as a complete grid whose "fiducial" at node n is column n of the corrections.
-  GridLayout grid;
+  GridLayout grid{};
   /// Correction per node (x fastest), sensor frame [m]; NaN where the node stayed empty.
-  Points3 node_corrections_sensor_m;
+  Points3 node_corrections_sensor_m{};
   Eigen::Index n_fiducial_nodes = 0;  ///< nodes holding a fiducial
   Eigen::Index n_filled = 0;          ///< empty nodes filled from their neighbours
   Eigen::Index n_empty = 0;           ///< nodes left without a correction (too few neighbours)

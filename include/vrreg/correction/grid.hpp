@@ -21,7 +21,7 @@ struct GridLayout {
   std::array<int, 3> nodes{};                           ///< nodes per axis (>= 2 each)
   int stride = 1;                ///< every stride-th fiducial of the base lattice (1: all of it)
   Eigen::Index n_fiducials = 0;  ///< fiducials the grid was detected in
-  std::vector<Eigen::Index> fiducial;  ///< fiducial column per node, x fastest
+  std::vector<Eigen::Index> fiducial{};  ///< fiducial column per node, x fastest
 
   /// Fiducial column of node (i, j, k).
   [[nodiscard]] Eigen::Index node_fiducial(int i, int j, int k) const {
@@ -33,8 +33,8 @@ struct GridLayout {
 
 /// A grid found in a fiducial layout, or why there is none.
 struct GridDetection {
-  std::optional<GridLayout> grid;
-  std::string reason;  ///< why no grid was found (empty when found)
+  std::optional<GridLayout> grid{};
+  std::string reason{};  ///< why no grid was found (empty when found)
 };
 
 /// Finds the complete regular grid in fiducials_robot_m [m] (nominal robot positions): the base

@@ -39,7 +39,7 @@ struct KrigingOptions {
   /// Known sd of the noise of one fiducial value [m] (e.g. from repeats): a lower bound on the
   /// fitted nugget sd (nugget variance = noise_sd^2 + a fitted non-negative excess, which
   /// absorbs field structure shorter than the fiducial spacing). Unset: the nugget is free.
-  std::optional<double> noise_sd_m;
+  std::optional<double> noise_sd_m{};
   /// Up to this many fiducials the model is exact (dense Cholesky of all of them); above it,
   /// each query is predicted from its `local_neighbours` nearest fiducials.
   Eigen::Index exact_limit = 2000;
@@ -62,12 +62,12 @@ struct KrigingOptions {
   bool loo_sd_calibration = true;
   /// Given factors instead (e.g. a model refitted on a subset keeps its parent's): no
   /// leave-one-out, in exact and local models alike. Each must be finite and > 0.
-  std::optional<std::array<double, 3>> latent_sd_scale;
+  std::optional<std::array<double, 3>> latent_sd_scale{};
 };
 
 /// Result of fitting one axis' hyperparameters.
 struct KrigingAxisFit {
-  KrigingHyperparameters hyperparameters;
+  KrigingHyperparameters hyperparameters{};
   double restricted_log_likelihood = 0.0;  ///< REML objective at the optimum (fit subset)
   int evaluations = 0;                     ///< likelihood + gradient evaluations, all starts
   Eigen::Index n_fit = 0;                  ///< fiducials the hyperparameters were fitted on
@@ -118,7 +118,7 @@ class KrigingModel {
  private:
   struct Impl;
   explicit KrigingModel(std::unique_ptr<Impl> impl);
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Impl> impl_{};
 };
 
 }  // namespace vrreg

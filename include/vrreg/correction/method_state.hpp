@@ -42,9 +42,9 @@ class MethodState {
   }
 
  private:
-  std::string method_;
-  std::vector<std::pair<std::string, Eigen::MatrixXd>> arrays_;
-  std::vector<std::pair<std::string, std::string>> texts_;
+  std::string method_{};
+  std::vector<std::pair<std::string, Eigen::MatrixXd>> arrays_{};
+  std::vector<std::pair<std::string, std::string>> texts_{};
 };
 
 }  // namespace vrreg

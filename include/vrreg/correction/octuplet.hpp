@@ -36,10 +36,10 @@ class OctupletStencils {
 
  private:
   struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Impl> impl_{};
   double cube_edge_m_ = 0.0;
   double tolerance_m_ = 0.0;
-  std::vector<std::size_t> sequence_;
+  std::vector<std::size_t> sequence_{};
 };
 
 }  // namespace vrreg

@@ -48,8 +48,8 @@ struct FiducialOutlier {
   double sigmas = 0.0;  ///< |d_j| / (sigma sqrt(1 + sum w^2)): how far off, in standard deviations
   /// The fill: the inlier neighbours and weights that predict its correction (Eq. 7-like), empty
   /// when too few inliers surround it (then it cannot be filled, only dropped).
-  std::vector<Eigen::Index> fill_fiducials;
-  std::vector<double> fill_weights;
+  std::vector<Eigen::Index> fill_fiducials{};
+  std::vector<double> fill_weights{};
   [[nodiscard]] bool can_fill() const { return !fill_fiducials.empty(); }
   /// sum_k w_k eps_k over the fill stencil (eps: corrections of all fiducials, sensor frame [m]).
   [[nodiscard]] Eigen::Vector3d fill(const ConstPoints3Ref& corrections_sensor_m) const;
@@ -57,16 +57,16 @@ struct FiducialOutlier {
 
 /// Result of detect_outlier_fiducials.
 struct OutlierDetection {
-  std::vector<FiducialOutlier> outliers;  ///< in ascending column order
+  std::vector<FiducialOutlier> outliers{};  ///< in ascending column order
   double sigma_m = 0.0;                   ///< per-axis scale used (noise or spread) [m]
-  std::optional<double> sigma_noise_m;    ///< the measured noise given [m]
+  std::optional<double> sigma_noise_m{};    ///< the measured noise given [m]
   double sigma_spread_m = 0.0;            ///< robust per-axis spread of the LOO deviations [m]
   bool scale_is_noise = false;            ///< sigma_m is sigma_noise (else the spread)
   double threshold_sigmas = 0.0;          ///< sqrt of the chi-square bound on t_j
   int n_judged = 0;  ///< fiducials with enough neighbours to be judged (the J of the bound)
   int iterations = 0;  ///< worst-first rejections made (re-admitted ones included)
   bool converged = false;  ///< false: more than max_outlier_fraction rejected
-  std::string message;     ///< why not converged
+  std::string message{};     ///< why not converged
 };
 
 /// Judges every fiducial's correction eps_j (Eq. 6) against its neighbours' LOO prediction (see

@@ -33,7 +33,7 @@ struct RbfOptions {
   /// Given smoothing per axis (kernel units, m^3, each finite and >= 0) instead of the
   /// leave-one-out choice: e.g. a refit on most of the same fiducials keeps its parent's. A
   /// local model then reports no LOO RMS (NaN).
-  std::optional<Eigen::Vector3d> smoothing;
+  std::optional<Eigen::Vector3d> smoothing{};
 };
 
 /// A fitted cubic (r^3) RBF model with polynomial term, per axis.
@@ -69,7 +69,7 @@ class RbfModel {
  private:
   struct Impl;
   explicit RbfModel(std::unique_ptr<Impl> impl);
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Impl> impl_{};
 };
 
 }  // namespace vrreg

@@ -31,6 +31,11 @@ enum class StencilStatus {
   kTooFewFiducials,
 };
 
+/// Whether a target with this status was corrected (ok, or extrapolated on request).
+[[nodiscard]] inline bool is_corrected(StencilStatus status) {
+  return status == StencilStatus::kOk || status == StencilStatus::kExtrapolated;
+}
+
 /// The fiducials and weights that carry corrections to one target (Eq. 7): sum of weights = 1.
 struct Stencil {
   std::array<Eigen::Index, 8> fiducial{};  ///< column indices into the fiducial set

@@ -41,7 +41,7 @@ class ScatteredStencils {
 
  private:
   struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<Impl> impl_{};
 };
 
 }  // namespace vrreg

@@ -20,26 +20,26 @@ namespace vrreg::experiments {
 
 /// One way of correcting the targets of a dataset, on one seed.
 struct BeyondRow {
-  std::string method;  ///< "octuplet", "strategy 2", "strategy 3" or a field model's name
+  std::string method{};  ///< "octuplet", "strategy 2", "strategy 3" or a field model's name
   bool ok = false;     ///< false: not applicable or not built yet; `note` says why (shown "-")
-  std::string note;
+  std::string note{};
   double cor_rms_t_m = std::numeric_limits<double>::quiet_NaN();  ///< Eq. 4 after correction
   /// RMS of TRE / sigma_pred over the targets with a predicted sd (NaN: none predicted).
   double calibration_rms_ratio = std::numeric_limits<double>::quiet_NaN();
   double within_2sigma = std::numeric_limits<double>::quiet_NaN();  ///< fraction TRE <= 2 sigma
   int n_flagged = 0;   ///< targets the method could not correct (they keep their uncorrected TRE)
-  std::string chosen;  ///< auto: the method cross-validation chose
+  std::string chosen{};  ///< auto: the method cross-validation chose
 };
 
 /// One dataset (or one KUKA configuration) of the beyond table, on one seed.
 struct BeyondTable {
-  std::string key;      ///< JSON pointer segment: A1, A2, B, A1_thinned, A1_cube27, kuka_1 ...
-  std::string dataset;  ///< what it is, for the printed table
+  std::string key{};      ///< JSON pointer segment: A1, A2, B, A1_thinned, A1_cube27, kuka_1 ...
+  std::string dataset{};  ///< what it is, for the printed table
   int n_fiducials = 0;  ///< fiducials of the field models' registration
   int n_targets = 0;
   double unc_rms_t_m = 0.0;    ///< uncorrected RMS_T with the field models' registration
   double noise_floor_m = 0.0;  ///< noise_floor_m of the targets
-  std::vector<BeyondRow> rows;
+  std::vector<BeyondRow> rows{};
 };
 
 /// What to run: the same test beds, seed and error models as the reproduction.
@@ -77,9 +77,9 @@ double noise_floor_m(const MeasurementSet& measured, const MeasurementSet& noise
 
 /// Targets of a set, as positions in set.select(Role::kTarget), forming one table.
 struct TargetGroup {
-  std::string key;
-  std::string dataset;
-  std::vector<std::size_t> positions;
+  std::string key{};
+  std::string dataset{};
+  std::vector<std::size_t> positions{};
 };
 
 /// Registers all fiducials of `measured` (robot stored for the joint model) and corrects all its

@@ -33,21 +33,21 @@ struct SweepStep {
   double gamma = 0.0;            ///< (unc - cor) / unc, a fraction
   int n_bad = 0;                 ///< Fig. 8: targets whose TRE got worse
   int n_flagged = 0;             ///< targets without a complete octuplet (left uncorrected)
-  std::vector<int> bad_targets;  ///< indices into DistanceSweep::target_points (Fig. 9, 10)
-  Eigen::VectorXd cor_tre_m;     ///< TRE(T^_X(n), d) per target
+  std::vector<int> bad_targets{};  ///< indices into DistanceSweep::target_points (Fig. 9, 10)
+  Eigen::VectorXd cor_tre_m{};     ///< TRE(T^_X(n), d) per target
 };
 
 /// The sweep: uncorrected errors once, corrected errors per cube size.
 struct DistanceSweep {
   int n_fiducials = 0;
-  std::vector<std::string> target_points;  ///< the targets' labels, in set order
-  Points3 target_robot_m;                  ///< their nominal robot positions [m] (Fig. 10)
-  Eigen::VectorXd unc_tre_m;               ///< TRE(T_X(n)) per target
+  std::vector<std::string> target_points{};  ///< the targets' labels, in set order
+  Points3 target_robot_m{};                  ///< their nominal robot positions [m] (Fig. 10)
+  Eigen::VectorXd unc_tre_m{};               ///< TRE(T_X(n)) per target
   double unc_rms_t_m = 0.0;
-  std::vector<SweepStep> steps;  ///< in options.cube_edges_m order
+  std::vector<SweepStep> steps{};  ///< in options.cube_edges_m order
   /// Fig. 11: TRE(T^_X) - TRE(T_X) where it improved (< 0), at the smallest cube [m].
-  Eigen::VectorXd delta_tre_at_d_min_m;
-  Histogram delta_tre_histogram;  ///< of delta_tre_at_d_min_m, bins options.delta_tre_bin_m
+  Eigen::VectorXd delta_tre_at_d_min_m{};
+  Histogram delta_tre_histogram{};  ///< of delta_tre_at_d_min_m, bins options.delta_tre_bin_m
   /// The step with the largest / smallest d.
   [[nodiscard]] const SweepStep& at_d_max() const;
   [[nodiscard]] const SweepStep& at_d_min() const;

@@ -10,16 +10,16 @@ namespace vrreg::experiments::paper {
 /// One row of Table 1 (UR5, datasets A1 and A2).
 struct Table1Row {
   const char* dataset;
-  double d_mm;
-  int targets;
-  int fiducials;
-  double sigma_opt_mm;
-  double sigma_l_mm;
-  double sigma_noise_mm;
-  double rho;
-  double unc_rms_t_mm;
-  double cor_rms_t_mm;
-  double gamma_percent;
+  double d_mm{};
+  int targets{};
+  int fiducials{};
+  double sigma_opt_mm{};
+  double sigma_l_mm{};
+  double sigma_noise_mm{};
+  double rho{};
+  double unc_rms_t_mm{};
+  double cor_rms_t_mm{};
+  double gamma_percent{};
 };
 
 /// Table 1: A1 (octuplet 50 mm, d = 43.3 mm) and A2 (25 mm, d = 21.6 mm).
@@ -47,12 +47,12 @@ inline constexpr DatasetB kDatasetB{};
 
 /// One configuration row of Table 2 (KUKA LWR 4+); index s - 1 for Strategy s.
 struct Table2Row {
-  int config;
-  std::array<double, 2> sigma_l_mm;     ///< Strategies 1, 2
-  std::array<double, 2> rho;            ///< Strategies 1, 2
-  std::array<double, 3> unc_rms_t_mm;   ///< Strategies 1, 2, 3
-  std::array<double, 3> cor_rms_t_mm;   ///< Strategies 1, 2, 3
-  std::array<double, 3> gamma_percent;  ///< Strategies 1, 2, 3
+  int config{};
+  std::array<double, 2> sigma_l_mm{};     ///< Strategies 1, 2
+  std::array<double, 2> rho{};            ///< Strategies 1, 2
+  std::array<double, 3> unc_rms_t_mm{};   ///< Strategies 1, 2, 3
+  std::array<double, 3> cor_rms_t_mm{};   ///< Strategies 1, 2, 3
+  std::array<double, 3> gamma_percent{};  ///< Strategies 1, 2, 3
 };
 
 /// Table 2, configurations 1-4.

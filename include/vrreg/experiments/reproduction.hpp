@@ -34,11 +34,11 @@ struct ReproductionOptions {
 /// Everything one seed produced.
 struct Reproduction {
   std::uint64_t seed = 0;
-  std::optional<Table1Entry> a1;    ///< Table 1, octuplet 50 mm (d = 43.3 mm)
-  std::optional<Table1Entry> a2;    ///< Table 1, octuplet 25 mm (d = 21.7 mm); Fig. 4
-  std::optional<DistanceSweep> b;   ///< Figures 7-11
-  std::optional<Table2> table2;     ///< Table 2, Figures 5, 6, 12-15
-  std::vector<BeyondTable> beyond;  ///< ReproductionOptions::beyond: beyond the paper; else empty
+  std::optional<Table1Entry> a1{};    ///< Table 1, octuplet 50 mm (d = 43.3 mm)
+  std::optional<Table1Entry> a2{};    ///< Table 1, octuplet 25 mm (d = 21.7 mm); Fig. 4
+  std::optional<DistanceSweep> b{};   ///< Figures 7-11
+  std::optional<Table2> table2{};     ///< Table 2, Figures 5, 6, 12-15
+  std::vector<BeyondTable> beyond{};  ///< ReproductionOptions::beyond: beyond the paper; else empty
 };
 
 /// Progress steps run_reproduction reports for `options` (one per dataset).

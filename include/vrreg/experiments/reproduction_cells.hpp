@@ -21,7 +21,7 @@ enum class CellKind {
 
 /// One named number; NaN means "not defined" (null in JSON, "-" in tables).
 struct Cell {
-  std::string pointer;
+  std::string pointer{};
   CellKind kind = CellKind::kValue;
   double value = 0.0;
 };
@@ -42,7 +42,7 @@ struct CellSummary {
 /// All cells over seeds, in the order of the first seed's cells.
 struct CellTable {
   int n_seeds = 0;
-  std::vector<CellSummary> cells;
+  std::vector<CellSummary> cells{};
   /// The cell named `pointer`, or nullptr.
   [[nodiscard]] const CellSummary* find(std::string_view pointer) const;
 };

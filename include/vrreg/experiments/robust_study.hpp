@@ -30,7 +30,7 @@ enum class RobustScenario { kClean, kDisplaced1mm, kDisplaced2mm, kSwapped };
 struct RobustStudyCell {
   std::uint64_t seed = 0;
   RobustScenario scenario = RobustScenario::kClean;
-  std::vector<std::string> planted;  ///< the bad fiducials (empty when clean)
+  std::vector<std::string> planted{};  ///< the bad fiducials (empty when clean)
   bool found = false;                ///< every planted fiducial rejected (clean: true)
   int good_rejected = 0;             ///< rejected fiducials that were not planted
   double planted_sigmas = 0.0;       ///< smallest deviation of a planted one, in sigmas (if found)
@@ -46,8 +46,8 @@ struct RobustStudyCell {
 
 /// All cells, scenario-major.
 struct RobustStudy {
-  RobustStudyOptions options;
-  std::vector<RobustStudyCell> cells;
+  RobustStudyOptions options{};
+  std::vector<RobustStudyCell> cells{};
 };
 
 /// Runs the study (seeds in parallel; the same options give the same numbers).

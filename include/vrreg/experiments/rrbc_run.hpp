@@ -39,9 +39,9 @@ struct RrbcRunFigures {
   double gamma = 0.0;
   int n_bad = 0;
   int n_flagged = 0;          ///< targets the interpolation could not correct
-  Eigen::VectorXd unc_tre_m;  ///< TRE(T_X) per target, in the order given (Eq. 3; Fig. 12-13)
-  Eigen::VectorXd cor_tre_m;  ///< TRE(T^_X) per target
-  std::optional<Histogram> l_histogram;  ///< when RrbcRunOptions::l_histogram_bin_m > 0
+  Eigen::VectorXd unc_tre_m{};  ///< TRE(T_X) per target, in the order given (Eq. 3; Fig. 12-13)
+  Eigen::VectorXd cor_tre_m{};  ///< TRE(T^_X) per target
+  std::optional<Histogram> l_histogram{};  ///< when RrbcRunOptions::l_histogram_bin_m > 0
 };
 
 /// Histogram of L_ij (Eq. 1; Fig. 4-6) over all pairs in bins of `bin_m` [m] whose edges are

@@ -34,18 +34,18 @@ struct Table2Entry {
   int config = 0;    ///< label m (Strategy 2: the relabelled m; Strategy 3: the IK's m)
   int strategy = 0;  ///< 1, 2 or 3
   /// Strategy 3: n_fiducials = 8 (registered), sigma_l_m = rho = 0 (not defined, as in the paper).
-  RrbcRunFigures figures;
-  std::vector<std::string> target_points;  ///< the targets' labels, in set order (Fig. 12-13)
-  Points3 target_robot_m;                  ///< their nominal robot positions [m]
+  RrbcRunFigures figures{};
+  std::vector<std::string> target_points{};  ///< the targets' labels, in set order (Fig. 12-13)
+  Points3 target_robot_m{};                  ///< their nominal robot positions [m]
 };
 
 /// Table 2 and what Procedure 2 did.
 struct Table2 {
-  std::vector<int> configs;                    ///< configuration labels, ascending
-  planning::Strategy2Summary strategy2;        ///< switched points / locations (paper: 14 %)
+  std::vector<int> configs{};                    ///< configuration labels, ascending
+  planning::Strategy2Summary strategy2{};        ///< switched points / locations (paper: 14 %)
   double sigma_noise_m = 0.0;                  ///< Eq. 9 from the options (paper: 0.077 mm)
-  std::vector<std::size_t> strategy3_corners;  ///< Strategy 3's registered fiducials (set index)
-  std::vector<Table2Entry> entries;            ///< per configuration, Strategies 1, 2, 3
+  std::vector<std::size_t> strategy3_corners{};  ///< Strategy 3's registered fiducials (set index)
+  std::vector<Table2Entry> entries{};            ///< per configuration, Strategies 1, 2, 3
   /// The entry of configuration `config` and strategy `strategy`; throws InputError if absent.
   [[nodiscard]] const Table2Entry& at(int config, int strategy) const;
   /// True when Strategy 2 relabelled some location the IK had listed as `config`.

@@ -26,12 +26,12 @@ struct CalibrationOptions {
 /// UR5 figures of one seed: A1 and A2 with octuplets of 50 and 25 mm, B over its ten cubes.
 struct Ur5SeedFigures {
   std::uint64_t seed = 0;
-  RrbcRunFigures a1;
-  RrbcRunFigures a2;
+  RrbcRunFigures a1{};
+  RrbcRunFigures a2{};
   double b_unc_rms_t_m = 0.0;
-  std::vector<double> b_cube_edge_m;  ///< 50 mm down to 5 mm
-  std::vector<double> b_cor_rms_t_m;  ///< per cube edge
-  std::vector<int> b_n_bad;           ///< per cube edge
+  std::vector<double> b_cube_edge_m{};  ///< 50 mm down to 5 mm
+  std::vector<double> b_cor_rms_t_m{};  ///< per cube edge
+  std::vector<int> b_n_bad{};           ///< per cube edge
   double seconds = 0.0;               ///< simulation + pipeline time
 };
 
@@ -40,8 +40,8 @@ struct Lwr4SeedFigures {
   std::uint64_t seed = 0;
   double switched_points_fraction = 0.0;     ///< nominal points Strategy 2 reorders (paper: 0.14)
   double switched_locations_fraction = 0.0;  ///< (point, config) locations it relabels
-  std::array<RrbcRunFigures, 4> strategy1;
-  std::array<RrbcRunFigures, 4> strategy2;
+  std::array<RrbcRunFigures, 4> strategy1{};
+  std::array<RrbcRunFigures, 4> strategy2{};
   double seconds = 0.0;
 };
 

@@ -17,8 +17,8 @@ void write_file_atomically(const std::string& path, const std::string& content);
 
 /// One output of a command: where it goes and what it holds.
 struct OutputFile {
-  std::string path;
-  std::string content;
+  std::string path{};
+  std::string content{};
 };
 
 /// The outputs of one command, all or none: every file is written to its temporary file and

@@ -14,14 +14,14 @@ namespace vrreg::io {
 
 /// One reading: a row of a measurement CSV, in SI units.
 struct Reading {
-  std::string point;  ///< label: not empty, no comma, quote, '#' start or spaces
+  std::string point{};  ///< label: not empty, no comma, quote, '#' start or spaces
   Role role = Role::kFiducial;
   bool has_robot = true;  ///< false: sensor-only point (all readings must agree)
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();   ///< nominal position, robot frame [m]
   Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();  ///< measured position, sensor frame [m]
-  std::optional<int> config;  ///< arm configuration label (all readings or none)
-  std::vector<double> q_rad;  ///< joint angles [rad] (same count in every reading)
-  std::optional<int> repeat;  ///< repeat index >= 0 (all readings or none)
+  std::optional<int> config{};  ///< arm configuration label (all readings or none)
+  std::vector<double> q_rad{};  ///< joint angles [rad] (same count in every reading)
+  std::optional<int> repeat{};  ///< repeat index >= 0 (all readings or none)
 };
 
 /// The CSV text: `comments` as `# ` lines first, then the header and one row per reading.

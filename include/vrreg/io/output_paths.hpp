@@ -8,8 +8,8 @@ namespace vrreg::io {
 
 /// A file a command reads or writes and the option that named it ("--fiducials", "-o").
 struct CommandPath {
-  std::string option;
-  std::string path;  ///< empty: the option was not given
+  std::string option{};
+  std::string path{};  ///< empty: the option was not given
 };
 
 /// Throws FileError naming the output when an output is the same file as an input or as another

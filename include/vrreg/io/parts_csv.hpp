@@ -25,7 +25,7 @@ namespace vrreg::io {
 
 /// One part point as read: label and nominal robot-frame position [m].
 struct PartRecord {
-  std::string point;
+  std::string point{};
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();
   std::size_t line = 0;  ///< 1-based line of its first row
 };

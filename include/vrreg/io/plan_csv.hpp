@@ -22,19 +22,19 @@ namespace vrreg::io {
 
 /// One location of a plan, SI units.
 struct PlanRow {
-  std::string point;  ///< label: not empty, no comma, quote, newline, leading '#' or spaces
+  std::string point{};  ///< label: not empty, no comma, quote, newline, leading '#' or spaces
   Role role = Role::kFiducial;
-  std::string part;  ///< part point of its cube (same label rules; empty when not given)
+  std::string part{};  ///< part point of its cube (same label rules; empty when not given)
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();  ///< TCP position, robot base frame [m]
-  std::optional<int> config;  ///< configuration label index (all rows or none)
-  std::vector<double> q_rad;  ///< commanded joints [rad] (same count in every row)
+  std::optional<int> config{};  ///< configuration label index (all rows or none)
+  std::vector<double> q_rad{};  ///< commanded joints [rad] (same count in every row)
   std::size_t line = 0;       ///< 1-based line when read from a file
 };
 
 /// A plan file's rows (visiting order) and comment lines (without the leading "# ").
 struct PlanFile {
-  std::vector<PlanRow> rows;
-  std::vector<std::string> comments;
+  std::vector<PlanRow> rows{};
+  std::vector<std::string> comments{};
   int n_joints = 0;
   bool has_config = false;
 };

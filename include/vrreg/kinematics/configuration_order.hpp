@@ -17,14 +17,14 @@ JointNorm parse_joint_norm(std::string_view name);
 
 /// The arm configurations measured at one nominal point, as listed (Strategy 1).
 struct PointConfigurations {
-  std::vector<int> labels;  ///< label of each configuration (distinct within the point)
-  Eigen::MatrixXd q_rad;    ///< joints, one column per configuration, same order as `labels` [rad]
+  std::vector<int> labels{};  ///< label of each configuration (distinct within the point)
+  Eigen::MatrixXd q_rad{};    ///< joints, one column per configuration, same order as `labels` [rad]
 };
 
 /// New labels along a path: the same shape as the input.
 struct PathRelabelling {
-  std::vector<std::vector<int>> labels;  ///< labels[p][k]: new label of configuration k of point p
-  std::vector<int> reference;            ///< per point, the column k of its reference configuration
+  std::vector<std::vector<int>> labels{};  ///< labels[p][k]: new label of configuration k of point p
+  std::vector<int> reference{};            ///< per point, the column k of its reference configuration
   int n_configurations = 0;              ///< configurations (locations) on the path
   int n_switched = 0;                    ///< configurations whose new label differs from the old
   int n_switched_points = 0;             ///< points with at least one switched configuration
@@ -37,12 +37,13 @@ struct PathRelabelling {
 
 /// Strategy 2 (section 4.4). `path`: the nominal points in visiting order. Point 0's reference is
 /// its configuration with the smallest label; at each next point the reference is the
-/// configuration nearest (in `norm`, angles wrapped) the previous point's reference. Each point's
+/// configuration nearest (in `norm`, angles wrapped, slides per `kinds`) the previous point's
+/// reference. Each point's
 /// reference gets rank 1 and the others ranks 2..m by ascending distance to it (ties keep label
 /// order). Rank r becomes the r-th smallest label used on the path (1..m for files labelled 1..m).
 /// Throws InputError on a point without configurations, repeated labels within a point, joint
 /// counts that differ, or non-finite joints.
 PathRelabelling relabel_along_path(const std::vector<PointConfigurations>& path,
-                                   JointNorm norm = JointNorm::kL2);
+                                   JointNorm norm = JointNorm::kL2, const JointKinds& kinds = {});
 
 }  // namespace vrreg::kinematics

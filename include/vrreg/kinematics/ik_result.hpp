@@ -3,6 +3,7 @@
 // Options in, result out for every analytic IK solver. Unreachable poses and singular cases are
 // values in the result, never exceptions; bad caller input throws InputError (design.md 7).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,9 +60,10 @@ const char* to_string(IkStatus status);
 
 /// One joint-space solution.
 struct IkSolution {
-  JointVector q_rad;                       ///< joint values [rad], shifted into the limits
-  ConfigurationLabel config;               ///< branch label
+  JointVector q_rad{};                       ///< joint values [rad], shifted into the limits
+  ConfigurationLabel config{};               ///< branch label
   std::uint8_t singular = kNoSingularity;  ///< Singularity flags of this solution
+  std::optional<double> psi_rad{};  ///< LWR with a free arm angle: the one chosen [rad]
 };
 
 /// All solutions of one query, ordered by configuration index.

@@ -12,8 +12,9 @@
 namespace vrreg::kinematics {
 
 /// Every IK solution of `T_base_tcp` (base frame, m): UR chains ignore `psi_rad`; LWR chains
-/// need it (throws InputError when absent); generic chains get the numerical IK (numeric_ik.hpp,
-/// default settings, one solution per configuration class found).
+/// solve at `psi_rad`, or without it each configuration at an arm angle within the joint limits
+/// (lwr_free_psi.hpp); generic chains get the numerical IK (numeric_ik.hpp, default settings,
+/// one solution per configuration class found).
 IkResult inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T_base_tcp,
                             std::optional<double> psi_rad = std::nullopt,
                             const IkOptions& options = {});

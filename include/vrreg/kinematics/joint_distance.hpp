@@ -17,25 +17,43 @@ enum class JointNorm { kL2, kLinf };
 /// Lower-case name of a norm ("l2", "linf").
 const char* to_string(JointNorm norm);
 
+/// Which joints are slides. A revolute joint's difference wraps into [-pi, pi); a prismatic
+/// joint's [m] does not (a carriage 6.4 m along is not near one at 0.1 m). In the norms a metre
+/// of travel weighs as a radian: both move an arm's marker by about its reach.
+class JointKinds {
+ public:
+  JointKinds() = default;  ///< every joint revolute
+  explicit JointKinds(const SerialChain& chain);
+  /// a_i - b_i, wrapped unless joint i is prismatic [rad or m].
+  [[nodiscard]] double difference(Eigen::Index i, double a, double b) const;
+
+ private:
+  std::vector<bool> prismatic_{};
+};
+
 /// sqrt(sum wrap(a_i - b_i)^2) [rad]; sizes must match (throws InputError).
-double joint_distance_l2(const JointRef& a_rad, const JointRef& b_rad);
+double joint_distance_l2(const JointRef& a_rad, const JointRef& b_rad,
+                         const JointKinds& kinds = {});
 /// max |wrap(a_i - b_i)| [rad]; sizes must match (throws InputError).
-double joint_distance_linf(const JointRef& a_rad, const JointRef& b_rad);
+double joint_distance_linf(const JointRef& a_rad, const JointRef& b_rad,
+                           const JointKinds& kinds = {});
 /// Distance in the chosen norm [rad].
-double joint_distance(const JointRef& a_rad, const JointRef& b_rad, JointNorm norm);
+double joint_distance(const JointRef& a_rad, const JointRef& b_rad, JointNorm norm,
+                      const JointKinds& kinds = {});
 
 /// Index of the column of `candidates_rad` (one configuration per column) nearest `reference_rad`;
 /// ties go to the lower index; empty when there are no columns.
 std::optional<int> nearest_configuration(const Eigen::Ref<const Eigen::MatrixXd>& candidates_rad,
-                                         const JointRef& reference_rad, JointNorm norm);
+                                         const JointRef& reference_rad, JointNorm norm,
+                                         const JointKinds& kinds = {});
 /// Column indices of `candidates_rad` sorted by distance to `reference_rad` (stable for ties).
 std::vector<int> order_by_distance(const Eigen::Ref<const Eigen::MatrixXd>& candidates_rad,
-                                   const JointRef& reference_rad, JointNorm norm);
+                                   const JointRef& reference_rad, JointNorm norm,
+                                   const JointKinds& kinds = {});
 
 /// The 2 pi shift of each joint of `q_rad` that lies in the chain's limits and is nearest
 /// `reference_rad` (what a controller commands); empty if some joint has no shift in its limits.
-/// Prismatic joints are not shifted, only checked. (The distances above wrap every joint as an
-/// angle.)
+/// Prismatic joints are not shifted, only checked.
 std::optional<JointVector> shift_nearest(const SerialChain& chain, const JointRef& q_rad,
                                          const JointRef& reference_rad);
 /// The 2 pi shift of each joint within the limits with the smallest |q|; empty if none fits.

@@ -65,18 +65,18 @@ struct JointErrorModelOptions {
 /// Everything a fitted joint-space error model is, besides its nominal chain: what
 /// JointErrorModel::restore needs to predict exactly as the fitted model did.
 struct JointErrorModelParameters {
-  std::vector<int> joint_degrees;                ///< Legendre degree per joint
-  std::vector<JointPeriodicTerm> periodic_terms;
+  std::vector<int> joint_degrees{};                ///< Legendre degree per joint
+  std::vector<JointPeriodicTerm> periodic_terms{};
   bool dh_deltas = true;
   bool marker_offset = true;
   int trend_degree = 2;
-  Eigen::VectorXd q_lo_rad;  ///< each joint's fitted range [rad]
-  Eigen::VectorXd q_hi_rad;
+  Eigen::VectorXd q_lo_rad{};  ///< each joint's fitted range [rad]
+  Eigen::VectorXd q_hi_rad{};
   Eigen::Vector3d trend_centre_m = Eigen::Vector3d::Zero();
   double trend_scale_m = 1.0;
   Eigen::Vector3d p_flange_marker_m = Eigen::Vector3d::Zero();  ///< the marker on the flange [m]
   bool linear = true;  ///< first-order model (no accepted Gauss-Newton step)
-  Eigen::VectorXd x;   ///< the parameters, unscaled (layout: src/kinematics/joint_error_design.hpp)
+  Eigen::VectorXd x{};   ///< the parameters, unscaled (layout: src/kinematics/joint_error_design.hpp)
   int rank = 0;
   double selection_cv_rms_m = 0.0;  ///< NaN when the degrees were given
 };
@@ -131,10 +131,10 @@ class JointErrorModel {
                            std::vector<int> degrees, double selection_cv_rms_m);
 
  private:
-  std::shared_ptr<const State> state_;
-  Points3 residuals_m_;
+  std::shared_ptr<const State> state_{};
+  Points3 residuals_m_{};
   int rank_ = 0;
-  std::vector<int> degrees_;
+  std::vector<int> degrees_{};
   double selection_cv_rms_m_ = 0.0;
 };
 

@@ -26,7 +26,7 @@ IkResult lwr_inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3
 struct LwrArmState {
   Eigen::Isometry3d T_base_tcp = Eigen::Isometry3d::Identity();  ///< TCP pose, base frame (m)
   double psi_rad = 0.0;                                          ///< arm angle in (-pi, pi]
-  ConfigurationLabel config;  ///< global configuration (signs of theta2/4/6)
+  ConfigurationLabel config{};  ///< global configuration (signs of theta2/4/6)
   std::uint8_t singular =
       kNoSingularity;  ///< Singularity flags (psi ill-defined if kElbowSingular)
 };

@@ -69,13 +69,13 @@ class SerialChain {
   void check_joints(const JointRef& q_rad, const char* what) const;
 
  private:
-  std::string name_;
-  std::vector<DhRow> rows_;
-  std::vector<JointLimits> limits_;
-  Eigen::Isometry3d T_base_dh0_;
-  Eigen::Isometry3d T_flange_tcp_;
-  Eigen::Isometry3d T_dh0_base_;
-  Eigen::Isometry3d T_tcp_flange_;
+  std::string name_{};
+  std::vector<DhRow> rows_{};
+  std::vector<JointLimits> limits_{};
+  Eigen::Isometry3d T_base_dh0_{};
+  Eigen::Isometry3d T_flange_tcp_{};
+  Eigen::Isometry3d T_dh0_base_{};
+  Eigen::Isometry3d T_tcp_flange_{};
   bool plain_ = true;
   ChainFamily family_ = ChainFamily::kGeneric;
 };

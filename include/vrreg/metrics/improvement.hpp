@@ -8,9 +8,11 @@ namespace vrreg {
 
 /// Summary of corrected against uncorrected target errors.
 struct ImprovementSummary {
-  int n_targets = 0;
+  int n_targets = 0;               ///< the targets summarised
   double unc_rms_t_m = 0.0;        ///< RMS_T of TRE(T_X) (Eq. 4)
   double cor_rms_t_m = 0.0;        ///< RMS_T of TRE(T^_X)
+  double unc_max_tre_m = 0.0;      ///< largest TRE(T_X)
+  double cor_max_tre_m = 0.0;      ///< largest TRE(T^_X)
   double gamma = 0.0;              ///< (unc - cor) / unc, a fraction (x100 for the paper's %)
   int n_bad = 0;                   ///< targets where TRE(T^_X) > TRE(T_X)
   std::vector<int> bad_targets{};  ///< their indices

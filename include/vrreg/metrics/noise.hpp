@@ -24,10 +24,10 @@ inline constexpr double kRhoThreshold = 2.5;
 
 /// The noise figures of a fiducial set (section 4.3), each present when it can be computed.
 struct NoiseFigures {
-  std::optional<double> sigma_opt_m;    ///< from repeat readings [m]
-  std::optional<double> sigma_rep_m;    ///< robot repeatability as given [m]
-  std::optional<double> sigma_noise_m;  ///< Eq. 9, when sigma_opt or sigma_rep is known [m]
-  std::optional<double> rho;            ///< sigma_L / sigma_noise, when sigma_noise > 0
+  std::optional<double> sigma_opt_m{};    ///< from repeat readings [m]
+  std::optional<double> sigma_rep_m{};    ///< robot repeatability as given [m]
+  std::optional<double> sigma_noise_m{};  ///< Eq. 9, when sigma_opt or sigma_rep is known [m]
+  std::optional<double> rho{};            ///< sigma_L / sigma_noise, when sigma_noise > 0
   /// rho is an upper bound: sigma_rep was not given, so sigma_noise counts the sensor only.
   [[nodiscard]] bool rho_is_upper_bound() const { return rho && !sigma_rep_m; }
 };

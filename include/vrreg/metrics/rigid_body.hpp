@@ -28,7 +28,7 @@ RigidBodyStatistics rigid_body_statistics(const ConstPoints3Ref& points_sensor_m
 struct Histogram {
   double lo_m = 0.0;
   double bin_width_m = 0.0;
-  std::vector<std::int64_t> counts;
+  std::vector<std::int64_t> counts{};
   std::int64_t below = 0;  ///< values under lo_m
   std::int64_t above = 0;  ///< values at or over the top edge
 };

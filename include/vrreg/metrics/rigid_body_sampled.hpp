@@ -35,8 +35,8 @@ struct SigmaLSampling {
 
 /// Statistics of L_ij and how they were obtained.
 struct RigidBodyEstimate {
-  RigidBodyStatistics statistics;  ///< sampled: pairs = pairs drawn; min/max over the sample
-  SigmaLSampling sampling;
+  RigidBodyStatistics statistics{};  ///< sampled: pairs = pairs drawn; min/max over the sample
+  SigmaLSampling sampling{};
 };
 
 /// Mean and sigma_L of L_ij (Eq. 1) from `pairs` pairs (i != j) drawn uniformly with replacement

@@ -18,10 +18,10 @@ namespace vrreg {
 
 /// Options of correct; unset members take the model's value.
 struct CorrectOptions {
-  std::optional<int> config;          ///< correct points with this label only (default: the model's)
-  InterpolationChoice interpolation;  ///< over the model's stored interpolation
+  std::optional<int> config{};          ///< correct points with this label only (default: the model's)
+  InterpolationChoice interpolation{};  ///< over the model's stored interpolation
   /// The arm (to the marker) for the joint-space field model; default: the model's.
-  std::optional<kinematics::SerialChain> robot;
+  std::optional<kinematics::SerialChain> robot{};
   /// Fit the corrector again even when the model's own answers (its fiducials unchanged: the
   /// same numbers unless the code that fits has changed). Off: the model's corrector is used
   /// whenever it was fitted for the interpolation asked.
@@ -36,12 +36,12 @@ struct CorrectOptions {
 
 /// The corrected points, in the order given.
 struct CorrectResult {
-  InterpolationSettings interpolation;  ///< as used
-  TargetCorrection correction;  ///< corrected_robot_m is what to command (uncorrected if flagged)
-  std::vector<std::string> names;  ///< point labels; empty for arrays given without names
-  std::vector<std::optional<int>> configs;  ///< configuration labels; empty when none were given
+  InterpolationSettings interpolation{};  ///< as used
+  TargetCorrection correction{};  ///< corrected_robot_m is what to command (uncorrected if flagged)
+  std::vector<std::string> names{};  ///< point labels; empty for arrays given without names
+  std::vector<std::optional<int>> configs{};  ///< configuration labels; empty when none were given
   /// Field models: the cross-validation table when `auto` chose the method.
-  std::optional<CrossValidation> cross_validation;
+  std::optional<CrossValidation> cross_validation{};
 };
 
 /// Corrects the target rows of a measurement set (robot columns needed by octuplet and Strategy 3

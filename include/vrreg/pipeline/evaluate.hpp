@@ -25,14 +25,14 @@ namespace vrreg {
 
 /// Options of evaluate; unset members take the model's value.
 struct EvaluateOptions {
-  std::optional<int> config;  ///< evaluate targets with this label only (default: the model's)
-  InterpolationChoice interpolation;  ///< over the model's stored interpolation
+  std::optional<int> config{};  ///< evaluate targets with this label only (default: the model's)
+  InterpolationChoice interpolation{};  ///< over the model's stored interpolation
   /// The model's strategy (the default), or 1 on a model built without one (per configuration).
-  std::optional<planning::Strategy> strategy;
+  std::optional<planning::Strategy> strategy{};
   /// Strategy 3: the joint distance for nearest configurations; Strategy 2: must be the model's.
-  std::optional<kinematics::JointNorm> joint_norm;
+  std::optional<kinematics::JointNorm> joint_norm{};
   /// The arm (to the marker) for the joint-space field model; default: the model's.
-  std::optional<kinematics::SerialChain> robot;
+  std::optional<kinematics::SerialChain> robot{};
   /// Fit the corrector again even when the model's own answers (its fiducials unchanged: the
   /// same numbers unless the code that fits has changed). Off: the model's corrector is used
   /// whenever it was fitted for the interpolation asked.
@@ -48,22 +48,30 @@ struct EvaluateOptions {
 /// The evaluated targets, in the order given.
 struct EvaluateResult {
   planning::Strategy strategy = planning::Strategy::kNone;  ///< as used
-  std::optional<int> config;            ///< the configuration evaluated, if one
-  InterpolationSettings interpolation;  ///< as used (the model's with the options applied)
-  TargetCorrection correction;          ///< stencils, corrected and uncorrected robot positions
-  std::vector<std::string> names;  ///< target labels; empty for arrays given without names
-  std::vector<std::optional<int>> configs;  ///< their configuration labels (Strategy 2: new ones)
-  Points3 targets_robot_m;              ///< nominal robot positions [m]
-  Eigen::VectorXd unc_tre_m;  ///< TRE(T_X) per target (Eq. 3) [m]
-  Eigen::VectorXd cor_tre_m;  ///< TRE(T^_X) per target; flagged targets keep the uncorrected one
-  ImprovementSummary summary;  ///< RMS_T (Eq. 4) both ways, gamma, N_bad, Delta TRE
+  std::optional<int> config{};            ///< the configuration evaluated, if one
+  InterpolationSettings interpolation{};  ///< as used (the model's with the options applied)
+  TargetCorrection correction{};          ///< stencils, corrected and uncorrected robot positions
+  std::vector<std::string> names{};  ///< target labels; empty for arrays given without names
+  std::vector<std::optional<int>> configs{};  ///< their configuration labels (Strategy 2: new ones)
+  Points3 targets_robot_m{};              ///< nominal robot positions [m]
+  Eigen::VectorXd unc_tre_m{};  ///< TRE(T_X) per target (Eq. 3) [m]
+  Eigen::VectorXd cor_tre_m{};  ///< TRE(T^_X) per target; flagged targets keep the uncorrected one
+  /// RMS_T (Eq. 4) both ways, gamma, N_bad, Delta TRE over the targets that were corrected only
+  /// (n_targets of them; bad_targets index all targets). The flagged ones are counted apart.
+  ImprovementSummary summary{};
+  /// RMS_T of the targets left uncorrected (correction.n_flagged of them) as registered (Eq. 2,
+  /// 4) [m]; 0 when there are none.
+  double flagged_rms_t_m = 0.0;
   /// The targets RRBC made worse: their names, or "#k" (k-th target, from 1) without names.
-  std::vector<std::string> bad_targets;
-  std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2: the targets' relabelling
+  std::vector<std::string> bad_targets{};
+  std::optional<planning::Strategy2Summary> relabelled{};  ///< Strategy 2: the targets' relabelling
   /// Field models: the cross-validation table when `auto` chose the method.
-  std::optional<CrossValidation> cross_validation;
+  std::optional<CrossValidation> cross_validation{};
   /// Field models: cor TRE against correction.predicted_sd_m (n = 0 for the paper's stencils).
-  UncertaintyCalibration calibration;
+  UncertaintyCalibration calibration{};
+
+  /// Every target evaluated, corrected or not.
+  [[nodiscard]] int n_targets() const { return static_cast<int>(unc_tre_m.size()); }
 };
 
 /// Evaluates `model` on the target rows of a measurement set (errors name `targets.source`).

@@ -10,8 +10,8 @@ namespace vrreg {
 
 /// Overrides of a model's stored interpolation; an unset member keeps the model's.
 struct InterpolationChoice {
-  std::optional<InterpolationMethod> method;
-  std::optional<double> cube_edge_m;  ///< octuplet cube edge [m]; given alone it selects octuplet
+  std::optional<InterpolationMethod> method{};
+  std::optional<double> cube_edge_m{};  ///< octuplet cube edge [m]; given alone it selects octuplet
   /// The model's `stored` settings with these on top; throws InputError when the result cannot
   /// work (octuplet without a cube edge).
   [[nodiscard]] InterpolationSettings apply(InterpolationSettings stored) const;

@@ -18,14 +18,14 @@ namespace vrreg {
 
 /// What register_with_marker_offset found.
 struct MarkerOffsetRegisterResult {
-  MarkerOffsetResult estimate;  ///< the joint estimate: offset, its uncertainty, condition, FRE
+  MarkerOffsetResult estimate{};  ///< the joint estimate: offset, its uncertainty, condition, FRE
   /// The model and figures of register_fiducials on the fiducials' FK positions with the estimated
   /// offset (model.marker_offset set); empty when the estimate is not ok (e.g. unobservable).
-  std::optional<RegisterResult> registered;
+  std::optional<RegisterResult> registered{};
   /// Fiducials used for the offset only, not for RRBC: those whose flange orientation differs
   /// (by more than kRrbcOrientationToleranceRad) from the orientation most fiducials share. RRBC
   /// interpolates an error field measured at one orientation; the tilted poses would mix others in.
-  std::vector<std::string> offset_only;
+  std::vector<std::string> offset_only{};
   /// p's standard uncertainty from the robot's joint zero offsets (estimation's
   /// joint_offset_sigma_rad; 0 when not given) [m], and with the noise's (the model stores it).
   Eigen::Vector3d p_std_joint_offsets_m = Eigen::Vector3d::Zero();

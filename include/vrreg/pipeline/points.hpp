@@ -13,18 +13,18 @@ namespace vrreg {
 /// Locations measured by the sensor and commanded to the robot, one column (or entry) each.
 /// Only `sensor_m` is required; every other member is empty or has one entry per location.
 struct MeasuredPoints {
-  Points3 sensor_m;  ///< measured (mean) positions, sensor frame [m]
+  Points3 sensor_m{};  ///< measured (mean) positions, sensor frame [m]
   /// Nominal (commanded) positions, robot frame [m]; needed to register and evaluate, and by
   /// octuplet correction; may have 0 columns when only correcting with grid or scattered.
-  Points3 robot_m;
-  Eigen::VectorXd weights;         ///< registration weights (Eq. 2), >= 0; empty: all equal
-  std::vector<std::string> names;  ///< labels for messages and outputs; empty: "1", "2", ...
-  std::vector<int> configs;        ///< arm configuration labels (Procedure 2); empty: none
-  Eigen::MatrixXd joints_rad;      ///< joint angles, one column per location [rad]; empty: none
+  Points3 robot_m{};
+  Eigen::VectorXd weights{};         ///< registration weights (Eq. 2), >= 0; empty: all equal
+  std::vector<std::string> names{};  ///< labels for messages and outputs; empty: "1", "2", ...
+  std::vector<int> configs{};        ///< arm configuration labels (Procedure 2); empty: none
+  Eigen::MatrixXd joints_rad{};      ///< joint angles, one column per location [rad]; empty: none
   /// Repeat readings averaged into each sensor position, and their per-axis sums of squared
   /// deviations [m^2] (for sigma_opt, Eq. 9); both empty when unknown.
-  Eigen::VectorXi n_readings;
-  Points3 sensor_sq_dev_m2;
+  Eigen::VectorXi n_readings{};
+  Points3 sensor_sq_dev_m2{};
 
   [[nodiscard]] Eigen::Index size() const { return sensor_m.cols(); }
   /// Throws InputError naming the member when sizes disagree or a value is not finite.

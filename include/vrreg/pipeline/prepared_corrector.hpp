@@ -31,11 +31,11 @@ class PreparedCorrector {
   [[nodiscard]] bool predicts_sd() const;
 
  private:
-  std::shared_ptr<const RegistrationModel> model_;
-  CorrectOptions options_;
+  std::shared_ptr<const RegistrationModel> model_{};
+  CorrectOptions options_{};
   /// Null when the points follow the set's way (Procedure 2 strategies, configuration labels,
   /// marker offsets): each call then chooses per point as correct() does.
-  std::shared_ptr<const Corrector> corrector_;
+  std::shared_ptr<const Corrector> corrector_{};
   InterpolationMethod method_ = InterpolationMethod::kLinear;
   int joints_needed_ = 0;
   bool predicts_sd_ = false;

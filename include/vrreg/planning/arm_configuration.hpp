@@ -34,9 +34,9 @@ struct ArmConfigurationOptions {
 /// Joints chosen for one location, or why there are none.
 struct JointChoice {
   kinematics::IkStatus status = kinematics::IkStatus::kUnreachable;
-  std::string message;            ///< why not (empty when ok)
-  kinematics::JointVector q_rad;  ///< commanded joints [rad], within the limits
-  kinematics::ConfigurationLabel config;
+  std::string message{};            ///< why not (empty when ok)
+  kinematics::JointVector q_rad{};  ///< commanded joints [rad], within the limits
+  kinematics::ConfigurationLabel config{};
   double distance_rad = 0.0;  ///< joint distance to the reference (options.norm)
   [[nodiscard]] bool ok() const { return status == kinematics::IkStatus::kOk; }
 };

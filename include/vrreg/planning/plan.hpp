@@ -23,7 +23,7 @@ namespace vrreg::planning {
 
 /// A part point (Fig. 16 target): a feature whose position must be known accurately.
 struct PartPoint {
-  std::string name;  ///< label; its fiducials are "<name>.f<ix>-<iy>-<iz>" (grid indices)
+  std::string name{};  ///< label; its fiducials are "<name>.f<ix>-<iy>-<iz>" (grid indices)
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();  ///< nominal position, robot base frame [m]
 };
 
@@ -47,26 +47,26 @@ const char* to_string(PlanStatus status);
 
 /// One location of the plan, in visiting order.
 struct PlannedLocation {
-  std::string point;                                     ///< label (part name for the target)
+  std::string point{};                                     ///< label (part name for the target)
   Role role = Role::kFiducial;                           ///< the part point itself is the target
   int part = 0;                                          ///< index of its part point
   Eigen::Vector3i grid_index = Eigen::Vector3i::Zero();  ///< node indices; kCentreIndex: target
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();     ///< TCP position, robot base frame [m]
-  kinematics::JointVector q_rad;                         ///< commanded joints [rad]
-  kinematics::ConfigurationLabel config;
+  kinematics::JointVector q_rad{};                         ///< commanded joints [rad]
+  kinematics::ConfigurationLabel config{};
   double joint_distance_rad = 0.0;  ///< to its part point's joints (options.arm.norm) [rad]
 };
 
 /// Per part point: its cube and configuration.
 struct PartPlan {
-  std::string name;
+  std::string name{};
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();  ///< robot base frame [m]
   long long n_fiducials = 0;
   double d_min_m = 0.0;  ///< to its 8 nearest fiducials [m]
   double d_max_m = 0.0;  ///< to its farthest fiducials [m]
   bool reachable = false;
-  kinematics::JointVector q_rad;  ///< joints of the part point [rad] (when reachable)
-  kinematics::ConfigurationLabel config;
+  kinematics::JointVector q_rad{};  ///< joints of the part point [rad] (when reachable)
+  kinematics::ConfigurationLabel config{};
   long long n_other_config = 0;         ///< fiducials whose configuration label differs
   double max_joint_distance_rad = 0.0;  ///< largest fiducial-to-part joint distance [rad]
   int visit_rank = -1;                  ///< position of its cube in the visiting order
@@ -74,8 +74,8 @@ struct PartPlan {
 
 /// A location without joints, and why.
 struct UnreachableLocation {
-  std::string point;
-  std::string reason;
+  std::string point{};
+  std::string reason{};
   int part = -1;  ///< index of its part point in the input
 };
 

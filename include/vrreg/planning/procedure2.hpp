@@ -27,9 +27,9 @@ Strategy strategy_from_number(int number);
 struct Procedure2 {
   Strategy strategy = Strategy::kNone;
   kinematics::JointNorm joint_norm = kinematics::JointNorm::kL2;  ///< Strategies 2 and 3
-  std::optional<std::uint64_t> seed;  ///< Strategy 3: seed of the random corner configurations
+  std::optional<std::uint64_t> seed{};  ///< Strategy 3: seed of the random corner configurations
   /// Strategy 3: the fiducials (indices into the model's) of the one registration (Eq. 2).
-  std::vector<std::size_t> registration_fiducials;
+  std::vector<std::size_t> registration_fiducials{};
 };
 
 }  // namespace vrreg::planning

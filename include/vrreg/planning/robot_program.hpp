@@ -19,10 +19,10 @@ ProgramFormat parse_program_format(const std::string& text);
 
 /// One location as the program visits it.
 struct ProgramLocation {
-  std::string point;  ///< label: the measurement CSV's `point`
+  std::string point{};  ///< label: the measurement CSV's `point`
   Role role = Role::kFiducial;
-  std::string config;             ///< configuration label, empty when none
-  kinematics::JointVector q_rad;  ///< commanded joints [rad]
+  std::string config{};             ///< configuration label, empty when none
+  kinematics::JointVector q_rad{};  ///< commanded joints [rad]
 };
 
 /// How the program moves and waits.

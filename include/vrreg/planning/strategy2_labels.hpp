@@ -36,6 +36,7 @@ struct Strategy2Result {
 /// Throws InputError (without the file name) when the set has no config column, no joint columns,
 /// or a location without a label or joints.
 Strategy2Result relabel_strategy2(const MeasurementSet& set,
-                                  kinematics::JointNorm norm = kinematics::JointNorm::kL2);
+                                  kinematics::JointNorm norm = kinematics::JointNorm::kL2,
+                                  const kinematics::JointKinds& kinds = {});
 
 }  // namespace vrreg::planning

@@ -23,10 +23,10 @@ struct Strategy3Options {
 
 /// One registration for all configurations (Strategy 3).
 struct Strategy3Registration {
-  RegistrationResult registration;  ///< Eq. 2 from the 8 volume-corner fiducials
+  RegistrationResult registration{};  ///< Eq. 2 from the 8 volume-corner fiducials
   /// Index into the input of the fiducial used at each volume corner (x fastest, then y, z).
   std::array<std::size_t, 8> corner_fiducials{};
-  Points3 corrections_sensor_m;  ///< epsilon_j (Eq. 6) of every input fiducial, sensor frame [m]
+  Points3 corrections_sensor_m{};  ///< epsilon_j (Eq. 6) of every input fiducial, sensor frame [m]
 };
 
 /// Strategy 3 (section 4.4): at each corner of the bounding box of the fiducials' nominal robot

@@ -24,27 +24,27 @@ namespace vrreg::report {
 struct CellReportInput {
   const RegistrationModel& model;
   const EvaluateResult& evaluation;
-  std::string model_name;             ///< the model file as named by the user
-  std::string targets_name;           ///< the targets file as named by the user
+  std::string model_name{};             ///< the model file as named by the user
+  std::string targets_name{};           ///< the targets file as named by the user
   /// Robot repeatability for sigma_noise (Eq. 9) [m]; empty: the one stored in the model, if any.
-  std::optional<double> sigma_rep_m;
+  std::optional<double> sigma_rep_m{};
 };
 
 /// The numbers behind the cell report.
 struct CellAnalysis {
   int n_fiducials = 0;
-  RigidBodyStatistics rigid_body;     ///< L_ij over the model's fiducial pairs (Eq. 1)
-  Histogram l_histogram;              ///< of L_ij [m]
-  SigmaLSampling sigma_l_sampling;    ///< above 20 000 fiducials: both from sampled pairs
-  NoiseFigures noise;  ///< sigma_opt (repeat readings), sigma_rep, sigma_noise, rho (Eq. 9)
-  std::string method;  ///< Procedure 2 in words, e.g. "Strategy 2 (l2 joint distance)"; or empty
-  Points3 targets_robot_m;          ///< nominal robot-frame positions of the targets
-  std::vector<std::string> labels;  ///< target labels, "T1" or "T1 (config 2)"
-  std::vector<std::optional<int>> configs;
-  Eigen::VectorXd unc_tre_m;   ///< TRE(T_X) per target (Eq. 3)
-  Eigen::VectorXd cor_tre_m;   ///< TRE(T^_X) per target (flagged: uncorrected)
-  ImprovementSummary summary;  ///< RMS_T, gamma, N_bad, Delta TRE
-  std::string where_bad;       ///< describe_locations of the bad targets
+  RigidBodyStatistics rigid_body{};     ///< L_ij over the model's fiducial pairs (Eq. 1)
+  Histogram l_histogram{};              ///< of L_ij [m]
+  SigmaLSampling sigma_l_sampling{};    ///< above 20 000 fiducials: both from sampled pairs
+  NoiseFigures noise{};  ///< sigma_opt (repeat readings), sigma_rep, sigma_noise, rho (Eq. 9)
+  std::string method{};  ///< Procedure 2 in words, e.g. "Strategy 2 (l2 joint distance)"; or empty
+  Points3 targets_robot_m{};          ///< nominal robot-frame positions of the targets
+  std::vector<std::string> labels{};  ///< target labels, "T1" or "T1 (config 2)"
+  std::vector<std::optional<int>> configs{};
+  Eigen::VectorXd unc_tre_m{};   ///< TRE(T_X) per target (Eq. 3)
+  Eigen::VectorXd cor_tre_m{};   ///< TRE(T^_X) per target (flagged: uncorrected)
+  ImprovementSummary summary{};  ///< RMS_T, gamma, N_bad, Delta TRE
+  std::string where_bad{};       ///< describe_locations of the bad targets
 };
 
 /// Computes the cell's figures: rigid-body statistics and histogram, noise, errors, summary.

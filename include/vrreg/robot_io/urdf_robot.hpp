@@ -14,10 +14,10 @@ namespace vrreg::io {
 struct UrdfChainOptions {
   /// Link whose frame poses are given in; empty: the tree's root. It may hang off the chain by
   /// fixed joints (a ROS-Industrial "base" frame beside "base_link").
-  std::string base_link;
+  std::string base_link{};
   /// Link the TCP is on; empty: the leaf reached through the most moving joints (an error when
   /// several are).
-  std::string tip_link;
+  std::string tip_link{};
 };
 
 /// Reads the URDF file at `path`; throws FileError naming it.

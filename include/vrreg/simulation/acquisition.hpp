@@ -35,7 +35,7 @@ inline const Eigen::Vector3d kRealisticMarkerFlangeM{0.035, -0.025, 0.085};
 struct SimulatedVisit {
   int location = 0;  ///< index into SimulatedDataset::locations
   int config = 0;    ///< LWR grid: label 1..4 in the IK module's order; plan: its config; else 0
-  kinematics::JointVector q_rad;  ///< commanded joints, as the controller reports them [rad]
+  kinematics::JointVector q_rad{};  ///< commanded joints, as the controller reports them [rad]
   Eigen::Vector3d tcp_m = Eigen::Vector3d::Zero();  ///< true TCP position of the visit [m, base]
 };
 
@@ -48,19 +48,19 @@ struct SimulatedReading {
 
 /// A simulated dataset: locations, visits and readings in visiting order, plus the truth.
 struct SimulatedDataset {
-  std::string testbed;  ///< "ur5" or "lwr4"
+  std::string testbed{};  ///< "ur5" or "lwr4"
   Dataset dataset = Dataset::kA1;
   std::uint64_t seed = 0;
-  TestbedErrorModel errors;       ///< the error model used
-  RobotErrors robot;              ///< the robot the seed drew
-  RigidTransform T_robot_sensor;  ///< the true tracker pose
+  TestbedErrorModel errors{};       ///< the error model used
+  RobotErrors robot{};              ///< the robot the seed drew
+  RigidTransform T_robot_sensor{};  ///< the true tracker pose
   /// The true marker position in the flange frame [m] when options gave one; empty: the tool's.
-  std::optional<Eigen::Vector3d> marker_flange_m;
+  std::optional<Eigen::Vector3d> marker_flange_m{};
   double sigma_rep_spec_m = 0.0;  ///< the robot's specified repeatability
   bool has_config = false;  ///< visits carry configuration labels (LWR grid; plans with config)
-  std::vector<PlannedLocation> locations;
-  std::vector<SimulatedVisit> visits;
-  std::vector<SimulatedReading> readings;
+  std::vector<PlannedLocation> locations{};
+  std::vector<SimulatedVisit> visits{};
+  std::vector<SimulatedReading> readings{};
 };
 
 /// Simulates `dataset` on `testbed`. Throws InputError for a dataset of the other test bed or an

@@ -41,7 +41,7 @@ std::vector<Eigen::Vector3i> serpentine_order(int nx, int ny, int nz);
 
 /// One nominal location to visit.
 struct PlannedLocation {
-  std::string point;  ///< label, unique per location ("p03_05_02"; B: "p01_01_01_a25_c3")
+  std::string point{};  ///< label, unique per location ("p03_05_02"; B: "p01_01_01_a25_c3")
   Role role = Role::kFiducial;
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();  ///< nominal TCP position, base frame [m]
   int owner = -1;            ///< B: index of the target location this fiducial surrounds

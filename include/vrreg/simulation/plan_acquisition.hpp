@@ -17,11 +17,11 @@ namespace vrreg::simulation {
 
 /// One location of a plan as a robot program is told it.
 struct CommandedLocation {
-  std::string point;  ///< label, unique per (point, config)
+  std::string point{};  ///< label, unique per (point, config)
   Role role = Role::kFiducial;
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();  ///< nominal TCP position, base frame [m]
-  std::optional<int> config;      ///< the plan's configuration label (all locations or none)
-  kinematics::JointVector q_rad;  ///< commanded joints [rad]
+  std::optional<int> config{};      ///< the plan's configuration label (all locations or none)
+  kinematics::JointVector q_rad{};  ///< commanded joints [rad]
 };
 
 /// How far the nominal model's TCP for a location's joints may be from its robot_m [m].

@@ -24,9 +24,9 @@ struct RobotErrorModel {
   /// Transmission error of joint i: A_i sin(2 pi q_i / P_i + phi_i) added to the commanded
   /// angle q_i; phi_i uniform in [0, 2 pi) per robot. Amplitudes A_i [rad], one per joint, or
   /// empty for none.
-  std::vector<double> transmission_amplitude_rad;
+  std::vector<double> transmission_amplitude_rad{};
   /// Periods P_i [rad] > 0 of the transmission error, one per joint (empty when no amplitudes).
-  std::vector<double> transmission_period_rad;
+  std::vector<double> transmission_period_rad{};
   /// Repeatability: TCP displacement drawn once per visit, Gaussian per axis of the base frame
   /// [m]. Not averaged away by repeat readings of one visit.
   double repeatability_sigma_m = 0.0;
@@ -34,9 +34,9 @@ struct RobotErrorModel {
   /// KUKA's does, the UR5's does not; a smooth error like this one is removed by RRBC).
   bool compliance = false;
   /// Mass of link i [kg], lumped halfway between the origins of DH frames i-1 and i.
-  std::vector<double> link_mass_kg;
+  std::vector<double> link_mass_kg{};
   /// Stiffness of joint i [N m / rad] > 0.
-  std::vector<double> joint_stiffness_nm_per_rad;
+  std::vector<double> joint_stiffness_nm_per_rad{};
   /// Mass at the TCP [kg] (the tracked sphere and its mount).
   double payload_kg = 0.0;
 
@@ -49,8 +49,8 @@ struct RobotErrorModel {
 
 /// One concrete robot drawn from a RobotErrorModel: what the seed decided.
 struct RobotErrors {
-  std::vector<kinematics::DhRow> dh_delta;     ///< actual minus nominal DH row, per joint
-  std::vector<double> transmission_phase_rad;  ///< phi_i per joint (empty without transmission)
+  std::vector<kinematics::DhRow> dh_delta{};     ///< actual minus nominal DH row, per joint
+  std::vector<double> transmission_phase_rad{};  ///< phi_i per joint (empty without transmission)
 };
 
 /// Draws the DH errors and transmission phases of one robot with `n_joints` joints.

@@ -36,8 +36,8 @@ class SimulatedRobot {
  private:
   kinematics::SerialChain nominal_;
   kinematics::SerialChain actual_;
-  RobotErrorModel model_;
-  RobotErrors errors_;
+  RobotErrorModel model_{};
+  RobotErrors errors_{};
 };
 
 }  // namespace vrreg::simulation

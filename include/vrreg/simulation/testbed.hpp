@@ -17,8 +17,8 @@ namespace vrreg::simulation {
 /// Everything that may differ between two simulated runs of one test bed: the robot's errors
 /// and the tracker (what an error-model file holds).
 struct TestbedErrorModel {
-  RobotErrorModel robot;
-  TrackerModel tracker;
+  RobotErrorModel robot{};
+  TrackerModel tracker{};
   /// Throws InputError when a part is invalid for a robot with `n_joints` joints.
   void validate(int n_joints) const {
     robot.validate(n_joints);
@@ -35,16 +35,16 @@ enum class TestbedKind {
 /// A test bed: robot, fixed geometry of the cell and default errors.
 struct Testbed {
   TestbedKind kind = TestbedKind::kUr5;
-  std::string name;                 ///< "ur5" or "lwr4"
+  std::string name{};                 ///< "ur5" or "lwr4"
   kinematics::SerialChain nominal;  ///< the controller's model; TCP = the tracked sphere
-  Eigen::Matrix3d tcp_rotation;     ///< commanded TCP orientation, base frame (fixed)
-  Eigen::Vector3d volume_centre_m;  ///< centre of the work volume, base frame [m]
+  Eigen::Matrix3d tcp_rotation{};     ///< commanded TCP orientation, base frame (fixed)
+  Eigen::Vector3d volume_centre_m{};  ///< centre of the work volume, base frame [m]
   double arm_angle_rad = 0.0;       ///< LWR: the arm angle psi every location is sent with
   /// UR: the joints the arm stands at before the first location. LWR: the home posture the
   /// analytic IK ranks its configurations by (see aik_order.hpp) [rad].
-  kinematics::JointVector home_q_rad;
+  kinematics::JointVector home_q_rad{};
   double sigma_rep_spec_m = 0.0;     ///< manufacturer's repeatability, for sigma_noise (Eq. 9)
-  TestbedErrorModel default_errors;  ///< calibrated defaults
+  TestbedErrorModel default_errors{};  ///< calibrated defaults
 };
 
 /// The UR5 test bed: 250 x 300 x 200 mm volume 2.1 m from the tracker, K = 12.

@@ -7,8 +7,9 @@
 #include "cell.hpp"
 
 int main() {
-  const vrreg::RegisterResult r = vrreg::register_fiducials(cell_fiducials());
-  const vrreg::CorrectResult c = vrreg::correct(r.model, cell_targets());
+  const vrreg::RegisterResult r =
+      vrreg::register_fiducials(cell_fiducials(), {.sigma_rep_m = 5e-5});
+  const vrreg::CorrectResult c = vrreg::correct(r.model, cell_targets(), {.exact = false});
   std::printf("FRE %.6f mm, %s\n", 1e3 * r.registration.fre_m, c.correction.layout.c_str());
   for (std::size_t i = 0; i < c.names.size(); ++i) {
     const Eigen::Vector3d p_mm = 1e3 * c.correction.corrected_robot_m.col(static_cast<Eigen::Index>(i));

@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "vrreg/io/result_json.hpp"
+
+#include <cstdio>
+#include <vector>
+
+#include "vrreg/core/units.hpp"
+#include "vrreg/kinematics/joint_distance.hpp"
+#include "vrreg/metrics/uncertainty_calibration.hpp"
+
+namespace vrreg::io {
+namespace {
+
+nlohmann::json mm3(const Eigen::Vector3d& m) {
+  return {units::m_to_mm(m.x()), units::m_to_mm(m.y()), units::m_to_mm(m.z())};
+}
+
+nlohmann::json mm_or_null(const std::optional<double>& m) {
+  return m ? nlohmann::json(units::m_to_mm(*m)) : nlohmann::json(nullptr);
+}
+
+// Millimetres with 4 decimals (0.1 um), as the brief reports give lengths.
+std::string mm_text(double metres) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.4f mm", units::m_to_mm(metres));
+  return text;
+}
+
+}  // namespace
+
+std::string location_name(const Location& location) {
+  return location.point +
+         (location.config ? " (config " + std::to_string(*location.config) + ")" : "");
+}
+
+nlohmann::json cross_validation_json(const CrossValidation& cv) {
+  nlohmann::json j;
+  j["folds"] = cv.folds;
+  j["seed"] = cv.seed;
+  j["chosen"] = to_string(cv.chosen);
+  j["n_common"] = cv.n_common;
+  nlohmann::json rows = nlohmann::json::array();
+  for (const CrossValidationRow& row : cv.rows) {
+    nlohmann::json r;
+    r["method"] = to_string(row.method);
+    r["applicable"] = row.applicable;
+    if (row.applicable) {
+      r["rms_common_mm"] = units::m_to_mm(row.rms_common_m);
+      r["rms_mm"] = units::m_to_mm(row.rms_m);
+      r["rms_axis_mm"] = mm3(row.rms_axis_m);
+      r["n_predicted"] = row.n_predicted;
+    } else {
+      r["note"] = row.note;
+    }
+    rows.push_back(r);
+  }
+  j["rows"] = rows;
+  return j;
+}
+
+nlohmann::json robust_json(const RobustReport& report) {
+  const OutlierDetection& d = report.detection;
+  nlohmann::json j;
+  j["method"] = "leave-one-out affine prediction from neighbours of the same configuration";
+  j["judged"] = d.n_judged;
+  j["sigma_mm"] = units::m_to_mm(d.sigma_m);
+  j["scale"] = d.scale_is_noise ? "sigma_noise" : "spread";
+  j["sigma_spread_mm"] = units::m_to_mm(d.sigma_spread_m);
+  j["sigma_noise_mm"] = mm_or_null(d.sigma_noise_m);
+  j["false_alarm_rate"] = report.false_alarm_rate;
+  j["threshold_sigmas"] = d.threshold_sigmas;
+  j["outliers"] = nlohmann::json::array();
+  for (const RejectedFiducial& r : report.rejected) {
+    nlohmann::json o;
+    o["point"] = r.point;
+    o["config"] = r.config ? nlohmann::json(*r.config) : nlohmann::json(nullptr);
+    o["deviation_mm"] = units::m_to_mm(r.deviation_m);
+    o["sigmas"] = r.sigmas;
+    o["handling"] = r.filled ? "filled from neighbours" : "dropped";
+    j["outliers"].push_back(o);
+  }
+  return j;
+}
+
+void add_predicted_sd_json(const TargetCorrection& correction,
+                           const std::optional<UncertaintyCalibration>& calibration,
+                           nlohmann::json& j) {
+  const PredictedSdSummary sd = summarize_predicted_sd(correction.predicted_sd_m);
+  if (sd.n == 0) return;
+  j["predicted_sd_median_mm"] = units::m_to_mm(sd.median_m);
+  j["predicted_sd_max_mm"] = units::m_to_mm(sd.max_m);
+  if (calibration && calibration->n > 0) {
+    j["calibration"] = {{"n", calibration->n},
+                        {"rms_tre_over_sd", calibration->rms_ratio},
+                        {"within_2sd", calibration->within_2sigma}};
+  }
+}
+
+void add_strategy_json(const RegistrationModel& model,
+                       const std::optional<planning::Strategy2Summary>& relabelled,
+                       nlohmann::json& j) {
+  const planning::Procedure2& p = model.procedure2;
+  const int strategy = planning::strategy_number(p.strategy);
+  j["strategy"] = strategy == 0 ? nlohmann::json(nullptr) : nlohmann::json(strategy);
+  if (strategy >= 2) j["joint_norm"] = kinematics::to_string(p.joint_norm);
+  if (relabelled) {
+    // switched_fraction is the paper's figure (section 5.2: "14 % of nominal locations"): the
+    // share of nominal points with any configuration relabelled.
+    j["switched_fraction"] = relabelled->switched_points_fraction();
+    j["switched_points_fraction"] = relabelled->switched_points_fraction();
+    j["n_switched_points"] = relabelled->n_switched_points;
+    j["n_points"] = relabelled->n_points;
+    j["switched_locations_fraction"] = relabelled->switched_locations_fraction();
+    j["n_switched_locations"] = relabelled->n_switched;
+    j["n_locations"] = relabelled->n_locations;
+  }
+  if (strategy == 3) {
+    j["seed"] = p.seed ? nlohmann::json(*p.seed) : nlohmann::json(nullptr);
+    std::vector<std::string> names;
+    for (const std::size_t f : p.registration_fiducials) {
+      names.push_back(location_name(model.fiducials[f]));
+    }
+    j["registration_fiducials"] = names;
+    j["n_correction_fiducials"] = model.fiducials.size();
+  }
+}
+
+nlohmann::json register_json(const RegisterResult& result) {
+  const RegistrationModel& model = result.model;
+  const RegistrationResult& reg = result.registration;
+  const RigidBodyStatistics& rb = result.rigid_body;
+  const Eigen::Matrix3d& r = model.T_robot_sensor.rotation;
+  nlohmann::json j;
+  j["n_fiducials"] = result.n_registered;
+  j["rotation"] = {
+      {r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)}, {r(2, 0), r(2, 1), r(2, 2)}};
+  j["translation_mm"] = mm3(model.T_robot_sensor.translation_m);
+  j["scale"] = model.T_robot_sensor.scale;
+  j["fre_mm"] = units::m_to_mm(reg.fre_m);
+  j["sigma_l_mm"] = units::m_to_mm(rb.sigma_l_m);
+  j["mean_l_mm"] = units::m_to_mm(rb.mean_m);
+  j["pairs"] = rb.pairs;
+  if (result.sigma_l_sampling.sampled) {
+    const SigmaLSampling& s = result.sigma_l_sampling;
+    j["sigma_l_sampling"] = {
+        {"pairs", s.pairs_sampled},
+        {"pairs_total", s.pairs_total},
+        {"seed", s.seed},
+        {"confidence", s.confidence},
+        {"interval_mm", {units::m_to_mm(s.sigma_l_low_m), units::m_to_mm(s.sigma_l_high_m)}}};
+  }
+  j["spread_mm"] = mm3(reg.spread_m);
+  if (result.noise.sigma_opt_m) j["sigma_opt_mm"] = units::m_to_mm(*result.noise.sigma_opt_m);
+  if (result.noise.sigma_noise_m) {
+    j["sigma_noise_mm"] = units::m_to_mm(*result.noise.sigma_noise_m);
+  }
+  if (result.noise.rho) j["rho"] = *result.noise.rho;
+  j["rejected"] = result.rejected;
+  if (result.robust) j["robust"] = robust_json(*result.robust);
+  if (result.cross_validation) {
+    j["cross_validation"] = cross_validation_json(*result.cross_validation);
+    j["interpolation"] = to_string(model.interpolation.method);
+  }
+  add_strategy_json(model, result.relabelled, j);
+  return j;
+}
+
+nlohmann::json evaluate_json(const EvaluateResult& result) {
+  const ImprovementSummary& s = result.summary;
+  const TargetCorrection& c = result.correction;
+  // The figures are over the corrected targets (n_corrected); none corrected: null.
+  const auto corrected_mm = [&](double m) {
+    return s.n_targets > 0 ? nlohmann::json(units::m_to_mm(m)) : nlohmann::json(nullptr);
+  };
+  nlohmann::json j;
+  j["config"] = result.config ? nlohmann::json(*result.config) : nlohmann::json(nullptr);
+  j["interpolation"] = to_string(c.method_used);
+  j["layout"] = c.layout;
+  if (c.method_used == InterpolationMethod::kOctuplet) {
+    j["cube_mm"] = units::m_to_mm(result.interpolation.cube_edge_m);
+  }
+  j["n_targets"] = result.n_targets();
+  j["n_corrected"] = s.n_targets;
+  j["n_flagged"] = c.n_flagged;
+  j["flagged_rms_t_mm"] =
+      c.n_flagged > 0 ? nlohmann::json(units::m_to_mm(result.flagged_rms_t_m)) : nlohmann::json(nullptr);
+  j["unc_rms_t_mm"] = corrected_mm(s.unc_rms_t_m);
+  j["cor_rms_t_mm"] = corrected_mm(s.cor_rms_t_m);
+  j["gamma_percent"] = s.n_targets > 0 ? nlohmann::json(100.0 * s.gamma) : nlohmann::json(nullptr);
+  j["n_bad"] = s.n_bad;
+  j["bad_targets"] = result.bad_targets;
+  j["unc_max_tre_mm"] = corrected_mm(s.unc_max_tre_m);
+  j["cor_max_tre_mm"] = corrected_mm(s.cor_max_tre_m);
+  add_predicted_sd_json(c, result.calibration, j);
+  if (result.cross_validation) j["cross_validation"] = cross_validation_json(*result.cross_validation);
+  const int strategy = planning::strategy_number(result.strategy);
+  j["strategy"] = strategy == 0 ? nlohmann::json(nullptr) : nlohmann::json(strategy);
+  return j;
+}
+
+nlohmann::json evaluate_json(const EvaluateResult& result, const RegistrationModel& model) {
+  nlohmann::json j = evaluate_json(result);
+  add_strategy_json(model, result.relabelled, j);
+  // Strategy 1 chosen at evaluation for a model built without one.
+  if (result.strategy == planning::Strategy::kAsListed &&
+      model.procedure2.strategy == planning::Strategy::kNone) {
+    j["strategy"] = 1;
+  }
+  return j;
+}
+
+nlohmann::json correct_json(const CorrectResult& result) {
+  const TargetCorrection& c = result.correction;
+  nlohmann::json j;
+  j["points"] = c.corrected_robot_m.cols();
+  j["n_flagged"] = c.n_flagged;
+  j["interpolation"] = to_string(c.method_used);
+  j["layout"] = c.layout;
+  add_predicted_sd_json(c, std::nullopt, j);
+  if (result.cross_validation) j["cross_validation"] = cross_validation_json(*result.cross_validation);
+  return j;
+}
+
+std::string brief_report(const RegisterResult& r) {
+  std::string text = std::to_string(r.n_registered) + " fiducials, FRE " +
+                     mm_text(r.registration.fre_m) + ", sigma_L " +
+                     mm_text(r.rigid_body.sigma_l_m);
+  if (r.noise.sigma_noise_m) text += ", sigma_noise " + mm_text(*r.noise.sigma_noise_m);
+  if (r.noise.rho) {
+    char rho[32];
+    std::snprintf(rho, sizeof rho, ", rho %.2f", *r.noise.rho);
+    text += rho;
+  }
+  if (!r.rejected.empty()) text += ", " + std::to_string(r.rejected.size()) + " rejected";
+  return text;
+}
+
+std::string brief_report(const EvaluateResult& r) {
+  std::string text =
+      std::to_string(r.n_targets()) + " targets, " + to_string(r.correction.method_used);
+  if (r.summary.n_targets > 0) {
+    char figures[160];
+    std::snprintf(figures, sizeof figures, ": RMS_T %s uncorrected, %s corrected, gamma %.1f%%, N_bad %d",
+                  mm_text(r.summary.unc_rms_t_m).c_str(), mm_text(r.summary.cor_rms_t_m).c_str(),
+                  100.0 * r.summary.gamma, r.summary.n_bad);
+    text += figures;
+  }
+  text += ", n_flagged " + std::to_string(r.correction.n_flagged);
+  if (r.correction.n_flagged > 0) text += " (RMS_T " + mm_text(r.flagged_rms_t_m) + " uncorrected)";
+  return text;
+}
+
+std::string brief_report(const CorrectResult& r) {
+  return std::to_string(r.correction.corrected_robot_m.cols()) + " points, " +
+         to_string(r.correction.method_used) + ", n_flagged " +
+         std::to_string(r.correction.n_flagged);
+}
+
+}  // namespace vrreg::io
