@@ -10,6 +10,7 @@
 #include "vrreg/io/file_error.hpp"
 #include "measurement_input.hpp"
 #include "vrreg/io/model_json.hpp"
+#include "vrreg/io/result_json.hpp"
 #include "vrreg/pipeline/marker_offset.hpp"
 
 namespace vrreg::cli {
@@ -77,39 +78,11 @@ void run_register_with_marker_offset(const std::string& fiducials_path,
   const RegisterResult& reg = *result.registered;
   if (!output.empty()) io::write_model_json(output, reg.model);
 
-  const Eigen::Matrix3d& r = reg.model.T_robot_sensor.rotation;
   if (json) {
-    nlohmann::json j;
+    nlohmann::json j = io::marker_offset_register_json(result);
     j["source"] = fiducials_path;
     j["robot"] = robot.name();
-    j["n_fiducials"] = reg.n_registered;
-    j["p_flange_marker_mm"] = json_mm3(e.p_flange_marker_m);
-    j["p_std_mm"] = json_mm3(result.p_std_total_m);
-    j["p_std_noise_mm"] = json_mm3(e.p_std_m);
-    j["p_std_joint_offsets_mm"] = json_mm3(result.p_std_joint_offsets_m);
-    j["rotation"] = {
-        {r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)}, {r(2, 0), r(2, 1), r(2, 2)}};
-    j["translation_mm"] = json_mm3(reg.model.T_robot_sensor.translation_m);
-    j["translation_std_mm"] = json_mm3(e.translation_std_m);
-    j["rotation_std_mrad"] = {1e3 * e.rotation_std_rad.x(), 1e3 * e.rotation_std_rad.y(),
-                              1e3 * e.rotation_std_rad.z()};
-    if (e.has_marker_orientation) {
-      const Eigen::Quaterniond& q = e.q_flange_marker;
-      j["q_flange_marker_xyzw"] = {q.x(), q.y(), q.z(), q.w()};
-      j["marker_rotation_std_deg"] = {units::rad_to_deg(e.marker_rotation_std_rad.x()),
-                                      units::rad_to_deg(e.marker_rotation_std_rad.y()),
-                                      units::rad_to_deg(e.marker_rotation_std_rad.z())};
-      j["sigma_orientation_deg"] = units::rad_to_deg(e.sigma_rad);
-    }
-    j["fre_mm"] = units::m_to_mm(e.fre_m);
-    j["orientation_spread_rad"] = e.orientation_spread;
-    j["condition_number"] = e.condition_number;
-    j["iterations"] = e.iterations;
-    j["sigma_l_mm"] = units::m_to_mm(reg.rigid_body.sigma_l_m);
-    if (reg.noise.sigma_opt_m) j["sigma_opt_mm"] = units::m_to_mm(*reg.noise.sigma_opt_m);
-    if (reg.noise.rho) j["rho"] = *reg.noise.rho;
     j["offset_given"] = known;
-    j["offset_only"] = result.offset_only;
     j["model"] = output.empty() ? nlohmann::json(nullptr) : nlohmann::json(output);
     print_json(j);
     return;
@@ -141,6 +114,7 @@ void run_register_with_marker_offset(const std::string& fiducials_path,
                 units::rad_to_deg(e.marker_rotation_std_rad.y()),
                 units::rad_to_deg(e.marker_rotation_std_rad.z()), units::rad_to_deg(e.sigma_rad));
   }
+  const Eigen::Matrix3d& r = reg.model.T_robot_sensor.rotation;
   std::printf("  rotation R (sensor -> robot)  [% .9f % .9f % .9f]\n", r(0, 0), r(0, 1), r(0, 2));
   std::printf("                                [% .9f % .9f % .9f]\n", r(1, 0), r(1, 1), r(1, 2));
   std::printf("                                [% .9f % .9f % .9f]\n", r(2, 0), r(2, 1), r(2, 2));

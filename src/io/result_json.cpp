@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
 #include "vrreg/metrics/uncertainty_calibration.hpp"
@@ -218,6 +219,43 @@ nlohmann::json correct_json(const CorrectResult& result) {
   j["layout"] = c.layout;
   add_predicted_sd_json(c, std::nullopt, j);
   if (result.cross_validation) j["cross_validation"] = cross_validation_json(*result.cross_validation);
+  return j;
+}
+
+nlohmann::json marker_offset_register_json(const MarkerOffsetRegisterResult& result) {
+  VRREG_THROW_UNLESS(result.ok(), "marker offset: no result to report (" << result.estimate.message
+                                                                           << ")");
+  const MarkerOffsetResult& e = result.estimate;
+  const RegisterResult& reg = *result.registered;
+  const Eigen::Matrix3d& r = reg.model.T_robot_sensor.rotation;
+  nlohmann::json j;
+  j["n_fiducials"] = reg.n_registered;
+  j["p_flange_marker_mm"] = mm3(e.p_flange_marker_m);
+  j["p_std_mm"] = mm3(result.p_std_total_m);
+  j["p_std_noise_mm"] = mm3(e.p_std_m);
+  j["p_std_joint_offsets_mm"] = mm3(result.p_std_joint_offsets_m);
+  j["rotation"] = {
+      {r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)}, {r(2, 0), r(2, 1), r(2, 2)}};
+  j["translation_mm"] = mm3(reg.model.T_robot_sensor.translation_m);
+  j["translation_std_mm"] = mm3(e.translation_std_m);
+  j["rotation_std_mrad"] = {1e3 * e.rotation_std_rad.x(), 1e3 * e.rotation_std_rad.y(),
+                            1e3 * e.rotation_std_rad.z()};
+  if (e.has_marker_orientation) {
+    const Eigen::Quaterniond& q = e.q_flange_marker;
+    j["q_flange_marker_xyzw"] = {q.x(), q.y(), q.z(), q.w()};
+    j["marker_rotation_std_deg"] = {units::rad_to_deg(e.marker_rotation_std_rad.x()),
+                                    units::rad_to_deg(e.marker_rotation_std_rad.y()),
+                                    units::rad_to_deg(e.marker_rotation_std_rad.z())};
+    j["sigma_orientation_deg"] = units::rad_to_deg(e.sigma_rad);
+  }
+  j["fre_mm"] = units::m_to_mm(e.fre_m);
+  j["orientation_spread_rad"] = e.orientation_spread;
+  j["condition_number"] = e.condition_number;
+  j["iterations"] = e.iterations;
+  j["sigma_l_mm"] = units::m_to_mm(reg.rigid_body.sigma_l_m);
+  if (reg.noise.sigma_opt_m) j["sigma_opt_mm"] = units::m_to_mm(*reg.noise.sigma_opt_m);
+  if (reg.noise.rho) j["rho"] = *reg.noise.rho;
+  j["offset_only"] = result.offset_only;
   return j;
 }
 

@@ -10,6 +10,7 @@
 
 #include "vrreg/pipeline/correct.hpp"
 #include "vrreg/pipeline/evaluate.hpp"
+#include "vrreg/pipeline/marker_offset.hpp"
 #include "vrreg/pipeline/register_fiducials.hpp"
 
 namespace vrreg::io {
@@ -25,6 +26,10 @@ nlohmann::json evaluate_json(const EvaluateResult& result);
 nlohmann::json evaluate_json(const EvaluateResult& result, const RegistrationModel& model);
 /// correct: how many points, how many flagged, the method and its layout, the predicted sd.
 nlohmann::json correct_json(const CorrectResult& result);
+/// register with the marker offset (hand-eye, docs/hand-eye.md): the offset and its uncertainty
+/// (noise, joint offsets, both), the transform and its uncertainty, the marker's orientation when
+/// measured, FRE, sigma_L, rho, the fiducials used for the offset only. `result` must be ok().
+nlohmann::json marker_offset_register_json(const MarkerOffsetRegisterResult& result);
 
 /// The cross-validation table of `auto` (rows per method: RMS, per axis, or why not applicable).
 nlohmann::json cross_validation_json(const CrossValidation& cv);
