@@ -11,10 +11,6 @@
 
 namespace vrreg::cli {
 
-nlohmann::json json_mm3(const Eigen::Vector3d& metres) {
-  return {units::m_to_mm(metres[0]), units::m_to_mm(metres[1]), units::m_to_mm(metres[2])};
-}
-
 void InterpolationFlags::add_to(CLI::App& command) {
   command
       .add_option("--interpolation", method,

@@ -15,9 +15,6 @@
 
 namespace vrreg::cli {
 
-/// A JSON array of a 3-vector in mm.
-nlohmann::json json_mm3(const Eigen::Vector3d& metres);
-
 /// Command-line interpolation options: --interpolation and --cube-mm.
 struct InterpolationFlags {
   std::string method;  ///< empty: keep the model's

@@ -88,7 +88,8 @@ void print_human(const IkArgs& args, const kinematics::SerialChain& chain,
       std::printf("  %d  %-40s", s.config.index(), s.config.to_string().c_str());
       for (int i = 0; i < s.q_rad.size(); ++i)
         std::printf(" %11.6f", shown_joint_value(chain, static_cast<int>(i), s.q_rad(i)));
-      if (s.psi_rad) std::printf("  psi %s deg", format_fixed(units::rad_to_deg(*s.psi_rad), 3).c_str());
+      if (s.psi_rad)
+        std::printf("  psi %s deg", format_fixed(units::rad_to_deg(*s.psi_rad), 3).c_str());
       if (s.singular != kinematics::kNoSingularity) {
         std::printf("  singular: %s", kinematics::singularity_names(s.singular).c_str());
       }
@@ -222,8 +223,10 @@ void add_ik_command(CLI::App& app) {
   cmd->add_option("--rotation", args->rotation,
                   "orientation as a rotation matrix, 9 numbers row by row")
       ->expected(9);
-  cmd->add_option("--psi-deg", args->psi_deg, "arm angle psi in deg (7-joint arms; default: free, each configuration at 0 or at the "
-                  "feasible arm angle nearest 0 within the joint limits)");
+  cmd->add_option(
+      "--psi-deg", args->psi_deg,
+      "arm angle psi in deg (7-joint arms; default: free, each configuration at 0 or at the "
+      "feasible arm angle nearest 0 within the joint limits)");
   cmd->add_option("--tool-mm", args->tool_mm,
                   "TCP offset X Y Z in the flange frame, mm (replaces the robot's tool)")
       ->expected(3);

@@ -52,7 +52,8 @@ void print_predicted_sd(const TargetCorrection& c,
 }
 
 const char* why_not_correctable(const TargetCorrection& c) {
-  const bool none = !c.stencils.empty() && c.stencils.front().status == StencilStatus::kTooFewFiducials;
+  const bool none =
+      !c.stencils.empty() && c.stencils.front().status == StencilStatus::kTooFewFiducials;
   return none ? "too few fiducials" : "outside the fiducials";
 }
 

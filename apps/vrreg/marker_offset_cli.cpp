@@ -4,11 +4,11 @@
 #include <cstdio>
 
 #include "cli_support.hpp"
+#include "measurement_input.hpp"
 #include "robot_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
-#include "measurement_input.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/io/result_json.hpp"
 #include "vrreg/pipeline/marker_offset.hpp"

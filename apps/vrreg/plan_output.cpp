@@ -8,6 +8,7 @@
 #include "robot_cli.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
+#include "vrreg/io/result_json.hpp"
 #include "vrreg/kinematics/pose.hpp"
 
 namespace vrreg::cli {
@@ -118,7 +119,7 @@ nlohmann::json plan_json(const PlanArgs& args, const PlanSetup& setup,
   nlohmann::json j;
   j["parts_file"] = args.parts;
   j["robot"] = setup.chain.name();
-  j["tool_mm"] = json_mm3(setup.chain.T_flange_tcp().translation());
+  j["tool_mm"] = io::json_mm3(setup.chain.T_flange_tcp().translation());
   const Eigen::Vector3d rpy = kinematics::rpy_from_rotation(o.arm.R_base_tcp);
   j["tool_rpy_deg"] = {units::rad_to_deg(rpy(0)), units::rad_to_deg(rpy(1)),
                        units::rad_to_deg(rpy(2))};
@@ -142,7 +143,7 @@ nlohmann::json plan_json(const PlanArgs& args, const PlanSetup& setup,
   nlohmann::json parts = nlohmann::json::array();
   for (const planning::PartPlan& p : plan.parts) {
     parts.push_back({{"point", p.name},
-                     {"robot_mm", json_mm3(p.robot_m)},
+                     {"robot_mm", io::json_mm3(p.robot_m)},
                      {"config", p.config.index()},
                      {"config_label", p.config.to_string()},
                      {"q_deg", degrees_json(p.q_rad)},

@@ -4,8 +4,8 @@
 #include <cstdio>
 
 #include "cli_support.hpp"
-#include "vrreg/io/result_json.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/io/result_json.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
 
 namespace vrreg::cli {

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The results of register / evaluate / correct as small classes: scalars in metres, per-point
 // arrays as read-only numpy views of the C++ result (no copy; the result stays alive with them).
-#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "arrays.hpp"
@@ -222,7 +221,8 @@ void bind_results(py::module_& m) {
           [](const RegisterResult& r) { return cross_validation_dict(r.cross_validation); },
           "interpolation 'auto': the K-fold cross-validation table [m] and its choice (dict)")
       .def(
-          "to_json", [](const RegisterResult& r) { return with_keywords(io::register_json(r).dump(2)); },
+          "to_json",
+          [](const RegisterResult& r) { return with_keywords(io::register_json(r).dump(2)); },
           "the JSON `vrreg register --json` prints for this result (lengths in mm), as a string")
       .def("__repr__", [](const RegisterResult& r) { return repr_of("RegisterResult", r); });
 
@@ -277,7 +277,8 @@ void bind_results(py::module_& m) {
           "field models: RMS of TRE / predicted sd (1 = calibrated) and the fraction within "
           "2 sd (dict), else None")
       .def(
-          "to_json", [](const EvaluateResult& r) { return with_keywords(io::evaluate_json(r).dump(2)); },
+          "to_json",
+          [](const EvaluateResult& r) { return with_keywords(io::evaluate_json(r).dump(2)); },
           "the JSON `vrreg evaluate --json` prints for this result (lengths in mm), as a string")
       .def("__repr__", [](const EvaluateResult& r) { return repr_of("EvaluateResult", r); });
   ev.def_property_readonly(
@@ -305,7 +306,8 @@ void bind_results(py::module_& m) {
                                 "Corrected points, in the order given; metres.");
   bind_correction_members(cor);
   cor.def(
-         "to_json", [](const CorrectResult& r) { return with_keywords(io::correct_json(r).dump(2)); },
+         "to_json",
+         [](const CorrectResult& r) { return with_keywords(io::correct_json(r).dump(2)); },
          "the JSON `vrreg correct --json` prints for this result (lengths in mm), as a string")
       .def("__repr__", [](const CorrectResult& r) { return repr_of("CorrectResult", r); });
 }

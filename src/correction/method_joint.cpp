@@ -181,7 +181,8 @@ Eigen::Vector3d marker_on_flange_m(const CorrectorData& data) {
                                  data.fiducials_robot_m.col(j)).norm());
   }
   VRREG_THROW_UNLESS(worst_m <= kNominalMismatchM,
-                     "the fiducials' robot positions are not " << data.robot->name()
+                     "the fiducials' robot positions are not "
+                         << data.robot->name()
                          << "'s forward kinematics of their joints to one marker (off by up to "
                          << worst_m * 1e3 << " mm): another `robot`?");
   return p_m;

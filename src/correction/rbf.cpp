@@ -32,12 +32,12 @@ void validate(const ConstPoints3Ref& positions_m, const ConstPoints3Ref& values_
                              << terms + 1);
   VRREG_THROW_UNLESS(positions_m.allFinite() && values_m.allFinite(),
                      "rbf: non-finite fiducial position or value");
-  VRREG_THROW_UNLESS(options.exact_limit > terms && options.local_neighbours > terms &&
-                         (options.smoothing_block == 0 || options.smoothing_block > terms) &&
-                         options.n_smoothing >= 1 &&
-                         options.min_log10_smoothing <= options.max_log10_smoothing,
-                     "rbf: exact_limit, local_neighbours and smoothing_block (unless 0) must exceed "
-                         << terms << ", n_smoothing >= 1, min <= max smoothing exponent");
+  VRREG_THROW_UNLESS(
+      options.exact_limit > terms && options.local_neighbours > terms &&
+          (options.smoothing_block == 0 || options.smoothing_block > terms) &&
+          options.n_smoothing >= 1 && options.min_log10_smoothing <= options.max_log10_smoothing,
+      "rbf: exact_limit, local_neighbours and smoothing_block (unless 0) must exceed "
+          << terms << ", n_smoothing >= 1, min <= max smoothing exponent");
   VRREG_THROW_UNLESS(!options.smoothing || (options.smoothing->allFinite() &&
                                             (options.smoothing->array() >= 0.0).all()),
                      "rbf: a given smoothing must be finite and >= 0");
@@ -91,8 +91,8 @@ RbfModel RbfModel::fit(const ConstPoints3Ref& positions_m, const ConstPoints3Ref
   if (!impl->exact()) {
     const Eigen::Index block_size =
         options.smoothing_block > 0 ? options.smoothing_block : options.exact_limit;
-    const std::vector<Eigen::Index> near = impl->index->nearest_k(
-        positions_m.rowwise().mean(), static_cast<std::size_t>(block_size));
+    const std::vector<Eigen::Index> near =
+        impl->index->nearest_k(positions_m.rowwise().mean(), static_cast<std::size_t>(block_size));
     block.resize(3, static_cast<Eigen::Index>(near.size()));
     block_values.resize(3, block.cols());
     for (Eigen::Index k = 0; k < block.cols(); ++k) {

@@ -3,9 +3,9 @@
 
 #include <sys/stat.h>
 
+#include <array>
 #include <cerrno>
 #include <cstring>
-#include <array>
 #include <string>
 
 #include "file_kind.hpp"

@@ -3,14 +3,14 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "corrector_json.hpp"
+#include "model_chain_json.hpp"
+#include "model_marker_offset_json.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/progress.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/model_json.hpp"
-#include "corrector_json.hpp"
-#include "model_chain_json.hpp"
-#include "model_marker_offset_json.hpp"
 
 namespace vrreg::io {
 namespace {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/io/result_json.hpp"
 
-#include <cstdio>
 #include <vector>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
 #include "vrreg/metrics/uncertainty_calibration.hpp"
@@ -12,22 +12,18 @@
 namespace vrreg::io {
 namespace {
 
-nlohmann::json mm3(const Eigen::Vector3d& m) {
-  return {units::m_to_mm(m.x()), units::m_to_mm(m.y()), units::m_to_mm(m.z())};
-}
-
 nlohmann::json mm_or_null(const std::optional<double>& m) {
   return m ? nlohmann::json(units::m_to_mm(*m)) : nlohmann::json(nullptr);
 }
 
 // Millimetres with 4 decimals (0.1 um), as the brief reports give lengths.
-std::string mm_text(double metres) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.4f mm", units::m_to_mm(metres));
-  return text;
-}
+std::string mm_text(double metres) { return format_mm(metres, 4) + " mm"; }
 
 }  // namespace
+
+nlohmann::json json_mm3(const Eigen::Vector3d& m) {
+  return {units::m_to_mm(m.x()), units::m_to_mm(m.y()), units::m_to_mm(m.z())};
+}
 
 std::string location_name(const Location& location) {
   return location.point +
@@ -48,7 +44,7 @@ nlohmann::json cross_validation_json(const CrossValidation& cv) {
     if (row.applicable) {
       r["rms_common_mm"] = units::m_to_mm(row.rms_common_m);
       r["rms_mm"] = units::m_to_mm(row.rms_m);
-      r["rms_axis_mm"] = mm3(row.rms_axis_m);
+      r["rms_axis_mm"] = json_mm3(row.rms_axis_m);
       r["n_predicted"] = row.n_predicted;
     } else {
       r["note"] = row.note;
@@ -135,7 +131,7 @@ nlohmann::json register_json(const RegisterResult& result) {
   j["n_fiducials"] = result.n_registered;
   j["rotation"] = {
       {r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)}, {r(2, 0), r(2, 1), r(2, 2)}};
-  j["translation_mm"] = mm3(model.T_robot_sensor.translation_m);
+  j["translation_mm"] = json_mm3(model.T_robot_sensor.translation_m);
   j["scale"] = model.T_robot_sensor.scale;
   j["fre_mm"] = units::m_to_mm(reg.fre_m);
   j["sigma_l_mm"] = units::m_to_mm(rb.sigma_l_m);
@@ -150,7 +146,7 @@ nlohmann::json register_json(const RegisterResult& result) {
         {"confidence", s.confidence},
         {"interval_mm", {units::m_to_mm(s.sigma_l_low_m), units::m_to_mm(s.sigma_l_high_m)}}};
   }
-  j["spread_mm"] = mm3(reg.spread_m);
+  j["spread_mm"] = json_mm3(reg.spread_m);
   if (result.noise.sigma_opt_m) j["sigma_opt_mm"] = units::m_to_mm(*result.noise.sigma_opt_m);
   if (result.noise.sigma_noise_m) {
     j["sigma_noise_mm"] = units::m_to_mm(*result.noise.sigma_noise_m);
@@ -183,8 +179,8 @@ nlohmann::json evaluate_json(const EvaluateResult& result) {
   j["n_targets"] = result.n_targets();
   j["n_corrected"] = s.n_targets;
   j["n_flagged"] = c.n_flagged;
-  j["flagged_rms_t_mm"] =
-      c.n_flagged > 0 ? nlohmann::json(units::m_to_mm(result.flagged_rms_t_m)) : nlohmann::json(nullptr);
+  j["flagged_rms_t_mm"] = c.n_flagged > 0 ? nlohmann::json(units::m_to_mm(result.flagged_rms_t_m))
+                                          : nlohmann::json(nullptr);
   j["unc_rms_t_mm"] = corrected_mm(s.unc_rms_t_m);
   j["cor_rms_t_mm"] = corrected_mm(s.cor_rms_t_m);
   j["gamma_percent"] = s.n_targets > 0 ? nlohmann::json(100.0 * s.gamma) : nlohmann::json(nullptr);
@@ -193,7 +189,8 @@ nlohmann::json evaluate_json(const EvaluateResult& result) {
   j["unc_max_tre_mm"] = corrected_mm(s.unc_max_tre_m);
   j["cor_max_tre_mm"] = corrected_mm(s.cor_max_tre_m);
   add_predicted_sd_json(c, result.calibration, j);
-  if (result.cross_validation) j["cross_validation"] = cross_validation_json(*result.cross_validation);
+  if (result.cross_validation)
+    j["cross_validation"] = cross_validation_json(*result.cross_validation);
   const int strategy = planning::strategy_number(result.strategy);
   j["strategy"] = strategy == 0 ? nlohmann::json(nullptr) : nlohmann::json(strategy);
   return j;
@@ -218,26 +215,27 @@ nlohmann::json correct_json(const CorrectResult& result) {
   j["interpolation"] = to_string(c.method_used);
   j["layout"] = c.layout;
   add_predicted_sd_json(c, std::nullopt, j);
-  if (result.cross_validation) j["cross_validation"] = cross_validation_json(*result.cross_validation);
+  if (result.cross_validation)
+    j["cross_validation"] = cross_validation_json(*result.cross_validation);
   return j;
 }
 
 nlohmann::json marker_offset_register_json(const MarkerOffsetRegisterResult& result) {
-  VRREG_THROW_UNLESS(result.ok(), "marker offset: no result to report (" << result.estimate.message
-                                                                           << ")");
+  VRREG_THROW_UNLESS(result.ok(),
+                     "marker offset: no result to report (" << result.estimate.message << ")");
   const MarkerOffsetResult& e = result.estimate;
   const RegisterResult& reg = *result.registered;
   const Eigen::Matrix3d& r = reg.model.T_robot_sensor.rotation;
   nlohmann::json j;
   j["n_fiducials"] = reg.n_registered;
-  j["p_flange_marker_mm"] = mm3(e.p_flange_marker_m);
-  j["p_std_mm"] = mm3(result.p_std_total_m);
-  j["p_std_noise_mm"] = mm3(e.p_std_m);
-  j["p_std_joint_offsets_mm"] = mm3(result.p_std_joint_offsets_m);
+  j["p_flange_marker_mm"] = json_mm3(e.p_flange_marker_m);
+  j["p_std_mm"] = json_mm3(result.p_std_total_m);
+  j["p_std_noise_mm"] = json_mm3(e.p_std_m);
+  j["p_std_joint_offsets_mm"] = json_mm3(result.p_std_joint_offsets_m);
   j["rotation"] = {
       {r(0, 0), r(0, 1), r(0, 2)}, {r(1, 0), r(1, 1), r(1, 2)}, {r(2, 0), r(2, 1), r(2, 2)}};
-  j["translation_mm"] = mm3(reg.model.T_robot_sensor.translation_m);
-  j["translation_std_mm"] = mm3(e.translation_std_m);
+  j["translation_mm"] = json_mm3(reg.model.T_robot_sensor.translation_m);
+  j["translation_std_mm"] = json_mm3(e.translation_std_m);
   j["rotation_std_mrad"] = {1e3 * e.rotation_std_rad.x(), 1e3 * e.rotation_std_rad.y(),
                             1e3 * e.rotation_std_rad.z()};
   if (e.has_marker_orientation) {
@@ -261,14 +259,9 @@ nlohmann::json marker_offset_register_json(const MarkerOffsetRegisterResult& res
 
 std::string brief_report(const RegisterResult& r) {
   std::string text = std::to_string(r.n_registered) + " fiducials, FRE " +
-                     mm_text(r.registration.fre_m) + ", sigma_L " +
-                     mm_text(r.rigid_body.sigma_l_m);
+                     mm_text(r.registration.fre_m) + ", sigma_L " + mm_text(r.rigid_body.sigma_l_m);
   if (r.noise.sigma_noise_m) text += ", sigma_noise " + mm_text(*r.noise.sigma_noise_m);
-  if (r.noise.rho) {
-    char rho[32];
-    std::snprintf(rho, sizeof rho, ", rho %.2f", *r.noise.rho);
-    text += rho;
-  }
+  if (r.noise.rho) text += ", rho " + format_fixed(*r.noise.rho, 2);
   if (!r.rejected.empty()) text += ", " + std::to_string(r.rejected.size()) + " rejected";
   return text;
 }
@@ -277,11 +270,10 @@ std::string brief_report(const EvaluateResult& r) {
   std::string text =
       std::to_string(r.n_targets()) + " targets, " + to_string(r.correction.method_used);
   if (r.summary.n_targets > 0) {
-    char figures[160];
-    std::snprintf(figures, sizeof figures, ": RMS_T %s uncorrected, %s corrected, gamma %.1f%%, N_bad %d",
-                  mm_text(r.summary.unc_rms_t_m).c_str(), mm_text(r.summary.cor_rms_t_m).c_str(),
-                  100.0 * r.summary.gamma, r.summary.n_bad);
-    text += figures;
+    text += ": RMS_T " + mm_text(r.summary.unc_rms_t_m) + " uncorrected, " +
+            mm_text(r.summary.cor_rms_t_m) + " corrected, gamma " +
+            format_fixed(100.0 * r.summary.gamma, 1) + "%, N_bad " +
+            std::to_string(r.summary.n_bad);
   }
   text += ", n_flagged " + std::to_string(r.correction.n_flagged);
   if (r.correction.n_flagged > 0) text += " (RMS_T " + mm_text(r.flagged_rms_t_m) + " uncorrected)";

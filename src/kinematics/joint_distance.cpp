@@ -62,8 +62,7 @@ double joint_distance_l2(const JointRef& a_rad, const JointRef& b_rad, const Joi
   return std::sqrt(sum);
 }
 
-double joint_distance_linf(const JointRef& a_rad, const JointRef& b_rad,
-                           const JointKinds& kinds) {
+double joint_distance_linf(const JointRef& a_rad, const JointRef& b_rad, const JointKinds& kinds) {
   check_sizes(a_rad, b_rad);
   double worst = 0.0;
   for (Eigen::Index i = 0; i < a_rad.size(); ++i) {
@@ -88,8 +87,8 @@ std::vector<int> order_by_distance(const Eigen::Ref<const Eigen::MatrixXd>& cand
   const auto n = static_cast<std::size_t>(candidates_rad.cols());
   std::vector<double> distance(n);
   for (std::size_t j = 0; j < n; ++j) {
-    distance[j] =
-        joint_distance(candidates_rad.col(static_cast<Eigen::Index>(j)), reference_rad, norm, kinds);
+    distance[j] = joint_distance(candidates_rad.col(static_cast<Eigen::Index>(j)), reference_rad,
+                                 norm, kinds);
   }
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);

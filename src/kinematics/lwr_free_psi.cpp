@@ -37,7 +37,8 @@ IkResult lwr_inverse_kinematics_free_psi(const SerialChain& chain,
     return result;
   }
   for (int c = 0; c < 8; ++c) {
-    const std::optional<double> psi = free_arm_angle(feasible.intervals[static_cast<std::size_t>(c)]);
+    const std::optional<double> psi =
+        free_arm_angle(feasible.intervals[static_cast<std::size_t>(c)]);
     if (!psi) {
       ++result.n_outside_limits;
       continue;

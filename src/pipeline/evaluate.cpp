@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/pipeline/evaluate.hpp"
 
-#include <cmath>
 #include <vector>
 
 #include "procedure2_steps.hpp"
@@ -63,19 +62,15 @@ EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet
   out.cor_tre_m = point_errors(out.correction.corrected_robot_m, out.targets_robot_m);
   // The summary never mixes corrected and uncorrected targets: RMS_T, gamma and N_bad are over
   // the corrected ones, and the others are counted apart with their own RMS_T.
-  std::vector<Eigen::Index> corrected;
-  double flagged_sum_m2 = 0.0;
+  std::vector<Eigen::Index> corrected, flagged;
   for (Eigen::Index k = 0; k < out.unc_tre_m.size(); ++k) {
-    if (is_corrected(out.correction.stencils[static_cast<std::size_t>(k)].status)) {
-      corrected.push_back(k);
-    } else {
-      flagged_sum_m2 += out.unc_tre_m(k) * out.unc_tre_m(k);
-    }
+    const bool ok = is_corrected(out.correction.stencils[static_cast<std::size_t>(k)].status);
+    (ok ? corrected : flagged).push_back(k);
   }
-  const auto n_flagged = static_cast<double>(out.unc_tre_m.size()) - static_cast<double>(corrected.size());
-  out.flagged_rms_t_m = n_flagged > 0 ? std::sqrt(flagged_sum_m2 / n_flagged) : 0.0;
+  out.flagged_rms_t_m = flagged.empty() ? 0.0 : root_mean_square(out.unc_tre_m(flagged));  // Eq. 4
   out.summary = summarize_improvement(out.unc_tre_m(corrected), out.cor_tre_m(corrected));
-  for (int& k : out.summary.bad_targets) k = static_cast<int>(corrected[static_cast<std::size_t>(k)]);
+  for (int& k : out.summary.bad_targets)
+    k = static_cast<int>(corrected[static_cast<std::size_t>(k)]);
   out.calibration =
       uncertainty_calibration(out.cor_tre_m, out.correction.predicted_sd_m);
   pipeline_detail::labels_of(*set, rows, out.names, out.configs);

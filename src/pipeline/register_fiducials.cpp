@@ -68,7 +68,8 @@ RegisterResult register_unchecked(const MeasurementSet& input, const RegisterOpt
   const MeasurementSet* set = &input;
   MeasurementSet relabelled;
   if (strategy == Strategy::kAlongPath) {
-    planning::Strategy2Result r = pipeline_detail::relabel(input, options.procedure2.joint_norm, options.robot);
+    planning::Strategy2Result r =
+        pipeline_detail::relabel(input, options.procedure2.joint_norm, options.robot);
     relabelled = std::move(r.set);
     out.relabelled = r.summary;
     set = &relabelled;

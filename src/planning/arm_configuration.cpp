@@ -39,8 +39,8 @@ JointChoice from_result(const kinematics::SerialChain& chain, const IkResult& r,
   choice.q_rad = s.q_rad;
   choice.config = s.config;
   if (reference != nullptr)
-    choice.distance_rad = kinematics::joint_distance(s.q_rad, *reference, norm,
-                                                     kinematics::JointKinds(chain));
+    choice.distance_rad =
+        kinematics::joint_distance(s.q_rad, *reference, norm, kinematics::JointKinds(chain));
   return choice;
 }
 

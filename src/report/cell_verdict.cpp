@@ -47,10 +47,11 @@ std::vector<ReportVerdict> cell_verdict(const CellReportInput& input, const Cell
   const int n_flagged = input.evaluation.correction.n_flagged;
   const std::string flagged_text =
       std::to_string(n_flagged) + " of " + std::to_string(input.evaluation.n_targets()) +
-      fmt::format(" targets could not be corrected (no fiducials around them, or too few "
-                  "fiducials); they are left uncorrected (RMS_T {:.3f} mm as registered) and "
-                  "are not in the figures above.",
-                  input.evaluation.flagged_rms_t_m * 1e3);
+      fmt::format(
+          " targets could not be corrected (no fiducials around them, or too few "
+          "fiducials); they are left uncorrected (RMS_T {:.3f} mm as registered) and "
+          "are not in the figures above.",
+          input.evaluation.flagged_rms_t_m * 1e3);
   if (s.n_targets == 0) {
     v.push_back({Tone::kWarn, n_flagged > 0 ? flagged_text : "No targets were evaluated."});
     return v;
@@ -94,10 +95,10 @@ std::vector<ReportVerdict> cell_verdict(const CellReportInput& input, const Cell
     if (worst < 0 || a.cor_tre_m[k] > a.cor_tre_m[worst]) worst = k;
   }
   if (worst >= 0) {
-    v.push_back({Tone::kInfo,
-                 fmt::format("Largest corrected TRE: {:.3f} mm", a.cor_tre_m[worst] * 1e3) +
-                     " at " + a.labels[static_cast<std::size_t>(worst)] +
-                     fmt::format(" (uncorrected {:.3f} mm).", a.unc_tre_m[worst] * 1e3)});
+    v.push_back(
+        {Tone::kInfo, fmt::format("Largest corrected TRE: {:.3f} mm", a.cor_tre_m[worst] * 1e3) +
+                          " at " + a.labels[static_cast<std::size_t>(worst)] +
+                          fmt::format(" (uncorrected {:.3f} mm).", a.unc_tre_m[worst] * 1e3)});
   }
   return v;
 }

@@ -102,8 +102,8 @@ TEST_F(HandEyeCli, EveryRegisterPathWithARobotKeepsIt) {
             0);
   for (const std::string how : {"--robot ur5", "--marker-offset-mm 35 -25 85 --robot ur5",
                                 "--estimate-marker-offset --robot ur5"}) {
-    const CliResult reg = run_vrreg("register --fiducials " + p("cell.csv") + " " + how + " -o " +
-                                    p("m.json"));
+    const CliResult reg =
+        run_vrreg("register --fiducials " + p("cell.csv") + " " + how + " -o " + p("m.json"));
     ASSERT_EQ(reg.status, 0) << how << ": " << reg.err;
     EXPECT_TRUE(json::parse(read_text(dir_ / "m.json")).contains("robot")) << how;
     const CliResult eval = run_vrreg("evaluate --model " + p("m.json") + " --targets " +

@@ -5,6 +5,7 @@
 // --robot FILE.urdf, the joint-space model fits the carriage's error in metres, and evaluate
 // corrects targets at carriage positions between the fiducials' to near the noise floor.
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
@@ -22,8 +23,8 @@ TEST(RailCellCli, JointModelOnAUrdfArmWithAPrismaticAxis) {
   const fs::path dir = fresh_dir("rail_cell");
   const std::string cell = rail_data("rail_cell.csv");
   const std::string robot = rail_data("urdf/ur5_on_rail.urdf");
-  const CliResult r = run_vrreg_in(
-      dir, "register --fiducials " + cell + " --robot " + robot + " --interpolation joint -o j.json");
+  const CliResult r = run_vrreg_in(dir, "register --fiducials " + cell + " --robot " + robot +
+                                            " --interpolation joint -o j.json");
   ASSERT_EQ(r.status, 0) << r.err;
   for (const std::string& extra : {std::string(), " --robot " + robot}) {
     const CliResult e =
@@ -41,8 +42,8 @@ TEST(RailCellCli, JointModelOnAUrdfArmWithAPrismaticAxis) {
   }
   // auto compares the methods that apply (position-only fields do not: one location, several
   // carriage positions) and keeps the joint model.
-  const CliResult a = run_vrreg_in(
-      dir, "register --fiducials " + cell + " --robot " + robot + " --interpolation auto -o a.json");
+  const CliResult a = run_vrreg_in(dir, "register --fiducials " + cell + " --robot " + robot +
+                                            " --interpolation auto -o a.json");
   ASSERT_EQ(a.status, 0) << a.err;
   const nlohmann::json model = nlohmann::json::parse(read_text(dir / "a.json"));
   EXPECT_EQ(model["corrector"]["method"], "joint") << model["corrector"]["cross_validation"].dump();

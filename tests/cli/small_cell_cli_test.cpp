@@ -57,14 +57,16 @@ TEST_F(SmallCellCli, EvaluateReportsTheUncorrectedTreAndWhy) {
     EXPECT_TRUE(e["gamma_percent"].is_null()) << method;
     const std::string layout = e["layout"].get<std::string>();
     EXPECT_NE(layout.find("3 fiducials are fewer than any correction method needs"),
-              std::string::npos) << layout;
+              std::string::npos)
+        << layout;
     EXPECT_NE(layout.find("scattered and linear 4"), std::string::npos) << layout;
   }
   const CliResult text = run_vrreg("evaluate --model " + p("m.json") + " --targets " +
                                    p("cell.csv") + " --per-target " + p("pt.csv"));
   ASSERT_EQ(text.status, 0) << text.err;
   EXPECT_NE(text.out.find("not correctable               4 targets (too few fiducials"),
-            std::string::npos) << text.out;
+            std::string::npos)
+      << text.out;
   EXPECT_NE(text.out.find("no target was corrected"), std::string::npos) << text.out;
   EXPECT_EQ(text.out.find("gamma ="), std::string::npos) << text.out;
   const std::string per_target = read_text(dir_ / "pt.csv");

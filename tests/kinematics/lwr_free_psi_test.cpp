@@ -24,7 +24,7 @@ TEST(LwrFreePsi, ArmAngleNearestZeroInsideTheFeasibleRange) {
   EXPECT_EQ(*free_arm_angle({{-0.2, 0.4}}), 0.0);
   EXPECT_NEAR(*free_arm_angle({{-1.0, -0.5}, {0.3, 2.0}}), 0.3 + m, 1e-15);
   EXPECT_NEAR(*free_arm_angle({{-1.0, -0.25}, {0.3, 2.0}}), -0.25 - m, 1e-15);
-  EXPECT_NEAR(*free_arm_angle({{0.50, 0.51}}), 0.505, 1e-15);  // narrower than two margins
+  EXPECT_NEAR(*free_arm_angle({{0.50, 0.51}}), 0.505, 1e-15);      // narrower than two margins
   EXPECT_NEAR(*free_arm_angle({{-0.01, 0.5}}), -0.01 + m, 1e-15);  // 0 too near the limit
 }
 

@@ -79,9 +79,9 @@ TEST_F(FrontDoor, RegistersTwoPointSetsAsUmeyamaDoes) {
   Eigen::MatrixXd both(6, fiducials.size() + 1);
   both.topLeftCorner(3, fiducials.size()) = fiducials.sensor_m;
   both.bottomLeftCorner(3, fiducials.size()) = fiducials.robot_m;
-  const RegisterResult r = register_fiducials(both.topLeftCorner(3, fiducials.size()),
-                                              both.bottomLeftCorner(3, fiducials.size()),
-                                              {.sigma_rep_m = 5e-5});
+  const RegisterResult r =
+      register_fiducials(both.topLeftCorner(3, fiducials.size()),
+                         both.bottomLeftCorner(3, fiducials.size()), {.sigma_rep_m = 5e-5});
   const RegisterResult same = register_fiducials(fiducials, {.sigma_rep_m = 5e-5});
   EXPECT_EQ(r.model.T_robot_sensor.rotation, same.model.T_robot_sensor.rotation);
   EXPECT_EQ(r.model.T_robot_sensor.translation_m, same.model.T_robot_sensor.translation_m);

@@ -17,15 +17,15 @@ enum class Role { kFiducial, kTarget };
 
 /// One measured location: a (point, config) pair with its repeat readings averaged.
 struct Location {
-  std::string point{};              ///< point label from the file
+  std::string point{};  ///< point label from the file
   Role role = Role::kFiducial;
-  std::optional<int> config{};      ///< arm configuration label, when the file has one
+  std::optional<int> config{};    ///< arm configuration label, when the file has one
   bool has_robot = true;          ///< false for points measured in the sensor frame only
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();   ///< nominal (commanded) position, robot frame
   Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();  ///< mean measured position, sensor frame
   int n_readings = 0;             ///< number of repeat readings averaged into sensor_m
   Eigen::Vector3d sensor_sq_dev_m2 = Eigen::Vector3d::Zero();  ///< per-axis sum of squared deviations
-  std::vector<double> q_rad{};      ///< joint angles, empty when absent
+  std::vector<double> q_rad{};                                 ///< joint angles, empty when absent
   /// The marker's orientation in the sensor frame (rigid-body trackers), averaged over the
   /// repeat readings; empty when the file has no sensor_qx..qw columns.
   std::optional<Eigen::Quaterniond> q_sensor_marker{};
@@ -35,7 +35,7 @@ struct Location {
 
 /// All locations of one file, in the order of their first reading (the visiting order).
 struct MeasurementSet {
-  std::string source{};             ///< file name, for messages
+  std::string source{};  ///< file name, for messages
   std::vector<Location> locations{};
   int n_joints = 0;               ///< joint columns in the file (0 when none)
   bool has_config = false;

@@ -15,8 +15,8 @@ namespace vrreg {
 /// position, its correction and where it was read.
 struct CorrectionField {
   SimilarityTransform T_robot_sensor{};  ///< Y ~ R X + tau (Eq. 2)
-  Points3 fiducials_robot_m{};      ///< nominal robot positions of the fiducials [m]
-  Points3 corrections_sensor_m{};   ///< epsilon_j (Eq. 6) per fiducial, sensor frame [m]
+  Points3 fiducials_robot_m{};           ///< nominal robot positions of the fiducials [m]
+  Points3 corrections_sensor_m{};        ///< epsilon_j (Eq. 6) per fiducial, sensor frame [m]
   /// Where each fiducial was read (its file line: the visiting order), or empty when unknown.
   std::vector<std::size_t> fiducials_sequence{};
 };

@@ -74,8 +74,8 @@ struct SavedCorrector {
   int cv_folds = 5;
   std::uint64_t cv_seed = 1;
   InterpolationMethod method = InterpolationMethod::kLinear;  ///< as fitted
-  MethodState state{};                ///< the fitted method's own state
-  std::optional<CrossValidation> cross_validation{};  ///< `auto`'s table
+  MethodState state{};                                        ///< the fitted method's own state
+  std::optional<CrossValidation> cross_validation{};          ///< `auto`'s table
   SdSource sd_source = SdSource::kNone;
   double cv_rms_m = 0.0;  ///< the method's cross-validated RMS (kGlobalCv, kLocalCv) [m]
   /// Held-out squared error (3D) per fiducial [m^2], NaN where not predicted (kLocalCv).

@@ -59,14 +59,14 @@ struct FiducialOutlier {
 struct OutlierDetection {
   std::vector<FiducialOutlier> outliers{};  ///< in ascending column order
   double sigma_m = 0.0;                   ///< per-axis scale used (noise or spread) [m]
-  std::optional<double> sigma_noise_m{};    ///< the measured noise given [m]
+  std::optional<double> sigma_noise_m{};  ///< the measured noise given [m]
   double sigma_spread_m = 0.0;            ///< robust per-axis spread of the LOO deviations [m]
   bool scale_is_noise = false;            ///< sigma_m is sigma_noise (else the spread)
   double threshold_sigmas = 0.0;          ///< sqrt of the chi-square bound on t_j
   int n_judged = 0;  ///< fiducials with enough neighbours to be judged (the J of the bound)
   int iterations = 0;  ///< worst-first rejections made (re-admitted ones included)
   bool converged = false;  ///< false: more than max_outlier_fraction rejected
-  std::string message{};     ///< why not converged
+  std::string message{};   ///< why not converged
 };
 
 /// Judges every fiducial's correction eps_j (Eq. 6) against its neighbours' LOO prediction (see

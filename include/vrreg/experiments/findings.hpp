@@ -19,10 +19,10 @@ inline constexpr double kFindingAcceptanceRate = 0.80;  ///< share of seeds a fi
 
 /// One finding on one seed.
 struct Finding {
-  std::string id{};          ///< stable key, e.g. "gamma_a2_above_a1"
-  std::string statement{};   ///< what the paper found, e.g. "gamma(A2) > gamma(A1)"
+  std::string id{};         ///< stable key, e.g. "gamma_a2_above_a1"
+  std::string statement{};  ///< what the paper found, e.g. "gamma(A2) > gamma(A1)"
   double value = 0.0;      ///< the number compared with the threshold (see `detail`)
-  std::string detail{};      ///< the value in words, e.g. "gamma(A2) - gamma(A1) = 12.8 points"
+  std::string detail{};    ///< the value in words, e.g. "gamma(A2) - gamma(A1) = 12.8 points"
   bool evaluated = false;  ///< false when the datasets it needs were not run
   bool met = false;
 };

@@ -21,10 +21,10 @@ struct Table1Options {
 
 /// One row of Table 1.
 struct Table1Entry {
-  std::string dataset{};       ///< e.g. "A1"
+  std::string dataset{};     ///< e.g. "A1"
   double cube_edge_m = 0.0;  ///< a [m]
   double d_m = 0.0;          ///< target-fiducial distance sqrt(3)/2 a [m]
-  RrbcRunFigures figures{};    ///< sigma_opt, sigma_L, sigma_noise, rho, RMS_T, gamma, N_bad
+  RrbcRunFigures figures{};  ///< sigma_opt, sigma_L, sigma_noise, rho, RMS_T, gamma, N_bad
 };
 
 /// Target-fiducial distance of an octuplet of edge a: d = sqrt(3)/2 a (section 4.1) [m].

@@ -41,8 +41,8 @@ struct Table2Entry {
 
 /// Table 2 and what Procedure 2 did.
 struct Table2 {
-  std::vector<int> configs{};                    ///< configuration labels, ascending
-  planning::Strategy2Summary strategy2{};        ///< switched points / locations (paper: 14 %)
+  std::vector<int> configs{};                  ///< configuration labels, ascending
+  planning::Strategy2Summary strategy2{};      ///< switched points / locations (paper: 14 %)
   double sigma_noise_m = 0.0;                  ///< Eq. 9 from the options (paper: 0.077 mm)
   std::vector<std::size_t> strategy3_corners{};  ///< Strategy 3's registered fiducials (set index)
   std::vector<Table2Entry> entries{};            ///< per configuration, Strategies 1, 2, 3

@@ -44,6 +44,9 @@ void add_strategy_json(const RegistrationModel& model,
                        const std::optional<planning::Strategy2Summary>& relabelled,
                        nlohmann::json& j);
 
+/// A 3-vector in metres as a JSON array in millimetres.
+nlohmann::json json_mm3(const Eigen::Vector3d& m);
+
 /// A location as people name it: its point, and its configuration when it has one.
 std::string location_name(const Location& location);
 

@@ -18,13 +18,14 @@ JointNorm parse_joint_norm(std::string_view name);
 /// The arm configurations measured at one nominal point, as listed (Strategy 1).
 struct PointConfigurations {
   std::vector<int> labels{};  ///< label of each configuration (distinct within the point)
-  Eigen::MatrixXd q_rad{};    ///< joints, one column per configuration, same order as `labels` [rad]
+  Eigen::MatrixXd q_rad{};  ///< joints, one column per configuration, same order as `labels` [rad]
 };
 
 /// New labels along a path: the same shape as the input.
 struct PathRelabelling {
-  std::vector<std::vector<int>> labels{};  ///< labels[p][k]: new label of configuration k of point p
-  std::vector<int> reference{};            ///< per point, the column k of its reference configuration
+  std::vector<std::vector<int>>
+      labels{};                          ///< labels[p][k]: new label of configuration k of point p
+  std::vector<int> reference{};          ///< per point, the column k of its reference configuration
   int n_configurations = 0;              ///< configurations (locations) on the path
   int n_switched = 0;                    ///< configurations whose new label differs from the old
   int n_switched_points = 0;             ///< points with at least one switched configuration

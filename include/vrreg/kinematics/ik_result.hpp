@@ -60,10 +60,10 @@ const char* to_string(IkStatus status);
 
 /// One joint-space solution.
 struct IkSolution {
-  JointVector q_rad{};                       ///< joint values [rad], shifted into the limits
-  ConfigurationLabel config{};               ///< branch label
+  JointVector q_rad{};                     ///< joint values [rad], shifted into the limits
+  ConfigurationLabel config{};             ///< branch label
   std::uint8_t singular = kNoSingularity;  ///< Singularity flags of this solution
-  std::optional<double> psi_rad{};  ///< LWR with a free arm angle: the one chosen [rad]
+  std::optional<double> psi_rad{};         ///< LWR with a free arm angle: the one chosen [rad]
 };
 
 /// All solutions of one query, ordered by configuration index.

@@ -16,11 +16,11 @@ namespace vrreg::kinematics {
 
 /// One moving joint: T_parent_child(q) = T_parent_joint * Rot(axis, q) (or * Trans(axis q)).
 struct ChainJoint {
-  std::string name{};                                                  ///< for messages
+  std::string name{};                                                ///< for messages
   JointType type = JointType::kRevolute;                             ///< revolute or prismatic
   Eigen::Isometry3d T_parent_joint = Eigen::Isometry3d::Identity();  ///< origin (m)
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  ///< in the joint frame, non-zero
-  JointLimits limits{};                               ///< [rad], or [m] if prismatic
+  JointLimits limits{};                             ///< [rad], or [m] if prismatic
 };
 
 /// The DH chain with the kinematics of `joints`: T_base_tip(q) = T_base_joint1 * M1(q1) *

@@ -65,7 +65,7 @@ struct JointErrorModelOptions {
 /// Everything a fitted joint-space error model is, besides its nominal chain: what
 /// JointErrorModel::restore needs to predict exactly as the fitted model did.
 struct JointErrorModelParameters {
-  std::vector<int> joint_degrees{};                ///< Legendre degree per joint
+  std::vector<int> joint_degrees{};  ///< Legendre degree per joint
   std::vector<JointPeriodicTerm> periodic_terms{};
   bool dh_deltas = true;
   bool marker_offset = true;
@@ -76,7 +76,8 @@ struct JointErrorModelParameters {
   double trend_scale_m = 1.0;
   Eigen::Vector3d p_flange_marker_m = Eigen::Vector3d::Zero();  ///< the marker on the flange [m]
   bool linear = true;  ///< first-order model (no accepted Gauss-Newton step)
-  Eigen::VectorXd x{};   ///< the parameters, unscaled (layout: src/kinematics/joint_error_design.hpp)
+  Eigen::VectorXd
+      x{};  ///< the parameters, unscaled (layout: src/kinematics/joint_error_design.hpp)
   int rank = 0;
   double selection_cv_rms_m = 0.0;  ///< NaN when the degrees were given
 };

@@ -18,7 +18,7 @@ namespace vrreg {
 
 /// Options of correct; unset members take the model's value.
 struct CorrectOptions {
-  std::optional<int> config{};          ///< correct points with this label only (default: the model's)
+  std::optional<int> config{};  ///< correct points with this label only (default: the model's)
   InterpolationChoice interpolation{};  ///< over the model's stored interpolation
   /// The arm (to the marker) for the joint-space field model; default: the model's.
   std::optional<kinematics::SerialChain> robot{};

@@ -48,13 +48,13 @@ struct EvaluateOptions {
 /// The evaluated targets, in the order given.
 struct EvaluateResult {
   planning::Strategy strategy = planning::Strategy::kNone;  ///< as used
-  std::optional<int> config{};            ///< the configuration evaluated, if one
+  std::optional<int> config{};                              ///< the configuration evaluated, if one
   InterpolationSettings interpolation{};  ///< as used (the model's with the options applied)
   TargetCorrection correction{};          ///< stencils, corrected and uncorrected robot positions
-  std::vector<std::string> names{};  ///< target labels; empty for arrays given without names
+  std::vector<std::string> names{};       ///< target labels; empty for arrays given without names
   std::vector<std::optional<int>> configs{};  ///< their configuration labels (Strategy 2: new ones)
-  Points3 targets_robot_m{};              ///< nominal robot positions [m]
-  Eigen::VectorXd unc_tre_m{};  ///< TRE(T_X) per target (Eq. 3) [m]
+  Points3 targets_robot_m{};                  ///< nominal robot positions [m]
+  Eigen::VectorXd unc_tre_m{};                ///< TRE(T_X) per target (Eq. 3) [m]
   Eigen::VectorXd cor_tre_m{};  ///< TRE(T^_X) per target; flagged targets keep the uncorrected one
   /// RMS_T (Eq. 4) both ways, gamma, N_bad, Delta TRE over the targets that were corrected only
   /// (n_targets of them; bad_targets index all targets). The flagged ones are counted apart.

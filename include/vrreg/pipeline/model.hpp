@@ -21,19 +21,20 @@ namespace vrreg {
 /// Everything needed to correct new targets: the registration and the fiducial corrections.
 struct RegistrationModel {
   static constexpr int kFormatVersion = 2;
-  SimilarityTransform T_robot_sensor{};     ///< Y ~ R X + tau (Eq. 2); scale 1 unless estimated
-  std::vector<Location> fiducials{};   ///< nominal robot and averaged sensor positions, labels, joints
-  Points3 corrections_sensor_m{};      ///< epsilon_j (Eq. 6), one column per fiducial, sensor frame
+  SimilarityTransform T_robot_sensor{};  ///< Y ~ R X + tau (Eq. 2); scale 1 unless estimated
+  std::vector<Location>
+      fiducials{};                 ///< nominal robot and averaged sensor positions, labels, joints
+  Points3 corrections_sensor_m{};  ///< epsilon_j (Eq. 6), one column per fiducial, sensor frame
   InterpolationSettings interpolation{};  ///< the default of evaluate and correct
-  std::optional<int> config{};         ///< configuration label the model was built for, if any
+  std::optional<int> config{};            ///< configuration label the model was built for, if any
   /// Strategy 2: `fiducials` carry Strategy 2 labels. Strategy 3: `fiducials` hold every arm
   /// configuration, corrected against the one registration from `registration_fiducials`.
   planning::Procedure2 procedure2{};
   double fre_m = 0.0;                ///< FRE of the registration (Eq. 2)
   double sigma_l_m = 0.0;            ///< sigma_L over the registered fiducial pairs (Eq. 1)
-  SigmaLSampling sigma_l_sampling{};   ///< sampled: sigma_l_m is estimated from a sample of pairs
+  SigmaLSampling sigma_l_sampling{};    ///< sampled: sigma_l_m is estimated from a sample of pairs
   std::optional<double> sigma_rep_m{};  ///< robot repeatability given when building (Eq. 9) [m]
-  std::string source{};                ///< the fiducial file (or "arrays") it came from
+  std::string source{};                 ///< the fiducial file (or "arrays") it came from
   /// Hand-eye registration (register_with_marker_offset): the estimated marker offset; the
   /// fiducials' robot positions and every target's come from forward kinematics with it.
   std::optional<MarkerOffsetModel> marker_offset{};

@@ -26,7 +26,8 @@ namespace vrreg {
 /// Options of register_fiducials; the defaults are the paper's (no scale, no strategy).
 struct RegisterOptions {
   std::optional<int> config{};  ///< register only the fiducials with this configuration label
-  RegistrationOptions registration{};  ///< e.g. estimate_scale: a similarity instead (not the paper)
+  RegistrationOptions
+      registration{};  ///< e.g. estimate_scale: a similarity instead (not the paper)
   /// Find fiducials whose correction disagrees with their neighbours' (a displaced or swapped
   /// marker; correction/outliers.hpp), register without them and fill their corrections from the
   /// neighbours. The noise scale is sigma_noise (Eq. 9) of these fiducials and sigma_rep_m.
@@ -61,7 +62,7 @@ struct RejectedFiducial {
 struct RobustReport {
   OutlierDetection detection{};  ///< scale, bound, fiducials judged (columns: the fiducial rows)
   std::vector<RejectedFiducial> rejected{};  ///< in file order
-  double false_alarm_rate = 0.0;  ///< the rate the bound was set for (OutlierOptions)
+  double false_alarm_rate = 0.0;             ///< the rate the bound was set for (OutlierOptions)
 };
 
 /// What register_fiducials found, besides the model.
@@ -69,10 +70,10 @@ struct RegisterResult {
   RegistrationModel model{};
   RegistrationResult registration{};  ///< the fit (Eq. 2): FRE, residuals, spread, of `registered`
   std::size_t n_registered = 0;     ///< fiducials in the fit (8 for Strategy 3)
-  RigidBodyStatistics rigid_body{};   ///< L_ij over the registered fiducials (Eq. 1)
-  SigmaLSampling sigma_l_sampling{};  ///< exact (all pairs) or sampled, with its interval
-  NoiseFigures noise{};               ///< sigma_opt, sigma_noise, rho (Eq. 9)
-  std::vector<std::string> rejected{};  ///< robust: names of the rejected fiducials
+  RigidBodyStatistics rigid_body{};      ///< L_ij over the registered fiducials (Eq. 1)
+  SigmaLSampling sigma_l_sampling{};     ///< exact (all pairs) or sampled, with its interval
+  NoiseFigures noise{};                  ///< sigma_opt, sigma_noise, rho (Eq. 9)
+  std::vector<std::string> rejected{};   ///< robust: names of the rejected fiducials
   std::optional<RobustReport> robust{};  ///< robust: the outliers, their deviations, the scale
   std::optional<planning::Strategy2Summary> relabelled{};  ///< Strategy 2: what was relabelled
   /// interpolation auto: the cross-validation table; the model stores the method it chose.

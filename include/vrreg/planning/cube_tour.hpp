@@ -18,8 +18,8 @@ namespace vrreg::planning {
 
 /// The cubes' visiting sequence and serpentine variants.
 struct CubeTour {
-  std::vector<int> order{};        ///< cube indices in visiting order (a permutation of 0..M-1)
-  std::vector<int> variant{};      ///< serpentine variant (0..47) of cube order[k], per k
+  std::vector<int> order{};      ///< cube indices in visiting order (a permutation of 0..M-1)
+  std::vector<int> variant{};    ///< serpentine variant (0..47) of cube order[k], per k
   double between_cubes_m = 0.0;  ///< sum of the exit-to-entry distances between cubes [m]
 };
 

@@ -47,12 +47,12 @@ const char* to_string(PlanStatus status);
 
 /// One location of the plan, in visiting order.
 struct PlannedLocation {
-  std::string point{};                                     ///< label (part name for the target)
+  std::string point{};                                   ///< label (part name for the target)
   Role role = Role::kFiducial;                           ///< the part point itself is the target
   int part = 0;                                          ///< index of its part point
   Eigen::Vector3i grid_index = Eigen::Vector3i::Zero();  ///< node indices; kCentreIndex: target
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();     ///< TCP position, robot base frame [m]
-  kinematics::JointVector q_rad{};                         ///< commanded joints [rad]
+  kinematics::JointVector q_rad{};                       ///< commanded joints [rad]
   kinematics::ConfigurationLabel config{};
   double joint_distance_rad = 0.0;  ///< to its part point's joints (options.arm.norm) [rad]
 };

@@ -24,8 +24,8 @@ namespace vrreg::report {
 struct CellReportInput {
   const RegistrationModel& model;
   const EvaluateResult& evaluation;
-  std::string model_name{};             ///< the model file as named by the user
-  std::string targets_name{};           ///< the targets file as named by the user
+  std::string model_name{};    ///< the model file as named by the user
+  std::string targets_name{};  ///< the targets file as named by the user
   /// Robot repeatability for sigma_noise (Eq. 9) [m]; empty: the one stored in the model, if any.
   std::optional<double> sigma_rep_m{};
 };
@@ -33,9 +33,9 @@ struct CellReportInput {
 /// The numbers behind the cell report.
 struct CellAnalysis {
   int n_fiducials = 0;
-  RigidBodyStatistics rigid_body{};     ///< L_ij over the model's fiducial pairs (Eq. 1)
-  Histogram l_histogram{};              ///< of L_ij [m]
-  SigmaLSampling sigma_l_sampling{};    ///< above 20 000 fiducials: both from sampled pairs
+  RigidBodyStatistics rigid_body{};   ///< L_ij over the model's fiducial pairs (Eq. 1)
+  Histogram l_histogram{};            ///< of L_ij [m]
+  SigmaLSampling sigma_l_sampling{};  ///< above 20 000 fiducials: both from sampled pairs
   NoiseFigures noise{};  ///< sigma_opt (repeat readings), sigma_rep, sigma_noise, rho (Eq. 9)
   std::string method{};  ///< Procedure 2 in words, e.g. "Strategy 2 (l2 joint distance)"; or empty
   Points3 targets_robot_m{};          ///< nominal robot-frame positions of the targets

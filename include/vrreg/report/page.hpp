@@ -31,8 +31,8 @@ struct ReportTable {
 
 /// One chart: a Plotly figure {data, layout}, a title and a one-line caption.
 struct ReportFigure {
-  std::string title{};                                 ///< e.g. "Fig. 7: corrected RMS_T against d"
-  std::string caption{};                               ///< one line: what to read from it
+  std::string title{};                               ///< e.g. "Fig. 7: corrected RMS_T against d"
+  std::string caption{};                             ///< one line: what to read from it
   nlohmann::json data = nlohmann::json::array();     ///< Plotly traces
   nlohmann::json layout = nlohmann::json::object();  ///< axis titles carry units
   bool wide = false;                                 ///< spans the page (e.g. TRE per target)

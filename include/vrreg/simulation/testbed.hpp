@@ -35,9 +35,9 @@ enum class TestbedKind {
 /// A test bed: robot, fixed geometry of the cell and default errors.
 struct Testbed {
   TestbedKind kind = TestbedKind::kUr5;
-  std::string name{};                 ///< "ur5" or "lwr4"
+  std::string name{};               ///< "ur5" or "lwr4"
   kinematics::SerialChain nominal;  ///< the controller's model; TCP = the tracked sphere
-  Eigen::Matrix3d tcp_rotation{};     ///< commanded TCP orientation, base frame (fixed)
+  Eigen::Matrix3d tcp_rotation{};   ///< commanded TCP orientation, base frame (fixed)
   Eigen::Vector3d volume_centre_m{};  ///< centre of the work volume, base frame [m]
   double arm_angle_rad = 0.0;       ///< LWR: the arm angle psi every location is sent with
   /// UR: the joints the arm stands at before the first location. LWR: the home posture the
