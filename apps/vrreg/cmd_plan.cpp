@@ -21,6 +21,7 @@
 #include "vrreg/io/plan_csv.hpp"
 #include "vrreg/kinematics/pose.hpp"
 #include "vrreg/kinematics/robots.hpp"
+#include "vrreg/planning/monitor_points.hpp"
 #include "vrreg/planning/offset_poses.hpp"
 #include "vrreg/simulation/testbed.hpp"
 
@@ -140,9 +141,21 @@ void run_plan_unchecked(const PlanArgs& args) {
         std::to_string(poses.n_unreachable) +
         " unreachable, left out); register with --estimate-marker-offset");
   }
+  if (args.monitor > 0) {
+    planning::add_monitor_points(plan, args.monitor);
+    setup.notes.push_back(
+        "monitor points: " + std::to_string(args.monitor) +
+        " fiducial locations spread over the volume, as 'monitor-*' (role monitor), read in " +
+        std::to_string(args.monitor_visits) +
+        " visits at registration and at every check (vrreg check, docs/monitoring.md)");
+  }
+  VRREG_THROW_UNLESS(args.monitor_program.empty() || args.monitor > 0,
+                     "--monitor-program needs --monitor");
   // Every output is made before any is written, then all are written or none.
   std::vector<io::OutputFile> outputs;
   if (!args.export_format.empty()) outputs.push_back({args.program, plan_program(args, plan)});
+  if (!args.monitor_program.empty())
+    outputs.push_back({args.monitor_program, plan_program(args, plan, true)});
   if (!args.output.empty()) {
     outputs.push_back(
         {args.output, io::format_plan_csv(plan_rows(plan), plan_comments(args, setup, plan))});
@@ -159,7 +172,9 @@ void run_plan(const PlanArgs& args) {
   // --robot names a built-in robot or a robot file; only a file is an input.
   const std::string robot_file = kinematics::robot_by_name(args.robot) ? "" : args.robot;
   io::check_outputs_are_not_inputs({{"--parts", args.parts}, {"--robot", robot_file}},
-                                   {{"-o", args.output}, {"--program", args.program}});
+                                   {{"-o", args.output},
+                                    {"--program", args.program},
+                                    {"--monitor-program", args.monitor_program}});
   try {
     run_plan_unchecked(args);
   } catch (const io::FileError&) {
@@ -217,6 +232,15 @@ void add_plan_command(CLI::App& app) {
                   "observable: register with --estimate-marker-offset (docs/hand-eye.md); 15-25 "
                   "is typical")
       ->check(CLI::Range(0.1, 60.0));
+  cmd->add_option("--monitor", args->monitor,
+                  "add N monitor points (fiducial locations spread over the volume, role "
+                  "monitor) that vrreg check reads again later (docs/monitoring.md); 3 or more")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--monitor-visits", args->monitor_visits,
+                  "visits of each monitor point in the programs (the robot's repeatability "
+                  "averages over visits)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   add_program_options(*cmd, *args);
   add_output_option(*cmd, "-o,--output", args->output, "write the plan CSV here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the summary");

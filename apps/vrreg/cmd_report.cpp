@@ -8,14 +8,15 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "measurement_input.hpp"
 #include "report_cli.hpp"
 #include "strategy_cli.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
-#include "measurement_input.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/io/plan_csv.hpp"
 #include "vrreg/report/cell_report.hpp"
+#include "vrreg/report/monitor_history.hpp"
 #include "vrreg/report/reproduce_report.hpp"
 #include "vrreg/vrreg.hpp"
 
@@ -31,6 +32,7 @@ struct ReportArgs {
   std::optional<double> sigma_rep_mm;
   std::string reproduce;
   std::string plan;
+  std::string history;
   std::string output;
   bool json = false;
 };
@@ -60,6 +62,7 @@ void run_report(const ReportArgs& args) {
   io::check_outputs_are_not_inputs({{"--model", args.model},
                                     {"--targets", args.targets},
                                     {"--plan", args.plan},
+                                    {"--history", args.history},
                                     {"--reproduce", reproduce_json}},
                                    {{"-o", args.output}});
   const bool cell = !args.model.empty() || !args.targets.empty();
@@ -68,11 +71,17 @@ void run_report(const ReportArgs& args) {
                      "(the paper's experiments)");
   VRREG_THROW_UNLESS(!cell || (!args.model.empty() && !args.targets.empty()),
                      "a cell report needs both --model and --targets");
+  VRREG_THROW_UNLESS(cell || args.history.empty(),
+                     "--history goes with a cell report (--model and --targets)");
   report::ReportPage page;
   if (cell) {
     page = cell_page(args);
     if (!args.plan.empty()) {
       page.sections.push_back(report::plan_section(io::read_plan_csv(args.plan), args.plan));
+    }
+    if (!args.history.empty()) {
+      page.sections.push_back(
+          report::monitor_history_section(io::read_check_history(args.history), args.history));
     }
     write_report_html(page, args.output);
   } else {
@@ -112,6 +121,8 @@ void add_report_command(CLI::App& app) {
   add_input_option(*cmd, "--reproduce", args->reproduce,
                    "directory written by 'vrreg reproduce --out DIR' (reads DIR/reproduce.json)",
                    "a directory name");
+  add_input_option(*cmd, "--history", args->history,
+                   "with --model: the cell's check history (vrreg check --history) as a section");
   add_input_option(*cmd, "--plan", args->plan,
                    "plan CSV from 'vrreg plan': adds its fiducial layout "
                    "(paper Fig. 16)");

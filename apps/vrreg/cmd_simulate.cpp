@@ -31,12 +31,21 @@ struct SimulateArgs {
   std::string plan;
   std::vector<double> marker_flange_mm;
   bool unknown_marker = false;
+  int monitor_visits = 12;
+  double at_h = 0.0;
+  double bump_mm = 0.0;
+  double bump_at_h = 0.0;
+  double warmup_growth = 0.0;
+  double warmup_tau_h = 0.5;
+  double daily_growth = 0.0;
+  std::string only;
 };
 
 // The plan's rows as the robot program is told them; errors name the plan file.
 simulation::SimulatedDataset simulate_plan_file(const simulation::Testbed& testbed,
                                                 const std::string& path,
-                                                const simulation::SimulationOptions& options) {
+                                                const simulation::SimulationOptions& options,
+                                                const std::string& only) {
   const io::PlanFile plan = io::read_plan_csv(path);
   if (plan.n_joints == 0) {
     throw io::FileError(path, 0,
@@ -46,6 +55,7 @@ simulation::SimulatedDataset simulate_plan_file(const simulation::Testbed& testb
   }
   std::vector<simulation::CommandedLocation> commanded;
   for (const io::PlanRow& row : plan.rows) {
+    if (!only.empty() && to_string(row.role) != only) continue;
     simulation::CommandedLocation c;
     c.point = row.point;
     c.role = row.role;
@@ -55,6 +65,7 @@ simulation::SimulatedDataset simulate_plan_file(const simulation::Testbed& testb
                                                 static_cast<Eigen::Index>(row.q_rad.size()));
     commanded.push_back(std::move(c));
   }
+  if (commanded.empty()) throw io::FileError(path, 0, "the plan has no " + only + " rows");
   try {
     return simulation::simulate_plan(testbed, commanded, options);
   } catch (const InputError& e) {
@@ -78,6 +89,18 @@ void run_simulate(const SimulateArgs& args) {
     options.marker_flange_m = simulation::kRealisticMarkerFlangeM;
   }
   if (!args.errors.empty()) options.errors = io::read_error_model_file(args.errors, testbed);
+  // Time: a check hours after registration sees the warm-up and any bump since.
+  constexpr double kSecondsPerHour = 3600.0;
+  options.monitor_visits = args.monitor_visits;
+  options.time_s = args.at_h * kSecondsPerHour;
+  options.events.thermal.warmup_growth = args.warmup_growth;
+  options.events.thermal.warmup_time_constant_s = args.warmup_tau_h * kSecondsPerHour;
+  options.events.thermal.daily_growth = args.daily_growth;
+  if (args.bump_mm > 0.0) {
+    options.events.bump_rms_m = 1e-3 * args.bump_mm;
+    options.events.bump_time_s = args.bump_at_h * kSecondsPerHour;
+  }
+  VRREG_THROW_UNLESS(args.only.empty() || !args.plan.empty(), "--only goes with --plan");
   // Both outputs are made before either is written, then written together or not at all.
   std::vector<io::OutputFile> outputs;
   if (!args.write_errors.empty()) {
@@ -103,7 +126,7 @@ void run_simulate(const SimulateArgs& args) {
                      "simulate: give a DATASET (ur5: A1, A2 or B; lwr4: grid) or --plan FILE");
   simulation::SimulatedDataset data;
   if (!args.plan.empty()) {
-    data = simulate_plan_file(testbed, args.plan, options);
+    data = simulate_plan_file(testbed, args.plan, options, args.only);
   } else {
     const simulation::Dataset dataset = simulation::parse_dataset(args.dataset);
     simulation::check_dataset(testbed.kind, dataset);
@@ -114,20 +137,32 @@ void run_simulate(const SimulateArgs& args) {
                                                io::simulated_dataset_comments(data))});
   io::write_files_atomically(outputs);
   say_errors_written();
-  std::size_t targets = 0;
-  for (const auto& location : data.locations) targets += location.role == Role::kTarget ? 1 : 0;
+  std::size_t targets = 0, monitors = 0;
+  for (const auto& location : data.locations) {
+    targets += location.role == Role::kTarget ? 1 : 0;
+    monitors += location.role == Role::kMonitor ? 1 : 0;
+  }
   const std::string what =
       args.plan.empty() ? simulation::to_string(data.dataset) : "plan " + args.plan;
   std::printf(
       "simulated %s %s with seed %llu%s\n", testbed.name.c_str(), what.c_str(),
       static_cast<unsigned long long>(args.seed),
       args.errors.empty() ? " (default errors)" : (" (errors from " + args.errors + ")").c_str());
-  std::printf("  %zu locations (%zu fiducials, %zu targets), %zu visits, %zu readings\n",
-              data.locations.size(), data.locations.size() - targets, targets, data.visits.size(),
-              data.readings.size());
+  std::printf("  %zu locations (%zu fiducials, %zu targets%s), %zu visits, %zu readings\n",
+              data.locations.size(), data.locations.size() - targets - monitors, targets,
+              monitors > 0 ? (", " + std::to_string(monitors) + " monitor points").c_str() : "",
+              data.visits.size(), data.readings.size());
   if (data.marker_flange_m) {
     std::printf("  true marker in the flange frame %s mm (robot_*_mm: the controller's TCP)\n",
                 format_mm3(*data.marker_flange_m, 3).c_str());
+  }
+  if (options.time_s != 0.0) {
+    std::printf("  at %s h: links grown by %s (warm-up), tracker %s\n",
+                format_fixed(args.at_h, 2).c_str(),
+                format_fixed(options.events.thermal.growth_at(options.time_s), 7).c_str(),
+                options.time_s >= options.events.bump_time_s
+                    ? ("bumped " + format_fixed(args.bump_mm, 3) + " mm RMS").c_str()
+                    : "as at time 0");
   }
   std::printf("  written to %s\n", args.output.c_str());
 }
@@ -144,6 +179,34 @@ void add_simulate_command(CLI::App& app) {
                    "measure this plan of 'vrreg plan --robot TESTBED' instead of a dataset: the "
                    "robot takes its joints, the tracker reads each location K times; then "
                    "'vrreg register' and 'vrreg evaluate --cube-mm SPACING' predict its accuracy");
+  cmd->add_option("--monitor-visits", args->monitor_visits,
+                  "with --plan: visits of each monitor point (role monitor), in rounds at the end")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
+  cmd->add_option("--only", args->only,
+                  "with --plan: measure only the rows of this role (monitor: a check)")
+      ->check(CLI::IsMember({"fiducial", "target", "monitor"}));
+  cmd->add_option("--at-h", args->at_h,
+                  "acquire this many hours after time 0 (registration): the warm-up and a bump "
+                  "since then apply, the noise is drawn afresh")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e5));
+  cmd->add_option("--bump-mm", args->bump_mm,
+                  "the tracker is bumped at --bump-at-h by this RMS displacement over the work "
+                  "volume (its direction drawn from the seed)")
+      ->check(CLI::Range(0.0, 100.0));
+  cmd->add_option("--bump-at-h", args->bump_at_h, "when the bump happens, hours")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e5));
+  cmd->add_option("--warmup-growth", args->warmup_growth,
+                  "relative growth of every link at full warm-up (alpha dT, e.g. 2e-4)")
+      ->check(CLI::Range(-0.005, 0.005));
+  cmd->add_option("--warmup-tau-h", args->warmup_tau_h, "warm-up time constant, hours")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-3, 1e3));
+  cmd->add_option("--daily-growth", args->daily_growth,
+                  "amplitude of the day's relative link growth (24 h period)")
+      ->check(CLI::Range(-0.005, 0.005));
   add_seed_option(*cmd, "--seed", args->seed,
                   "draws the robot's errors and the noise; the same seed gives the same file")
       ->capture_default_str();

@@ -2,7 +2,8 @@
 // vrreg: the command line. Parses, calls the library, writes through io. The only place that
 // catches exceptions and maps them to exit codes:
 //   0 success, 1 bad input or a failed computation (one line on stderr), 2 usage error,
-//   3 the command answered but found no solution (vrreg ik; one line on stderr).
+//   3 the command answered but found no solution (vrreg ik; one line on stderr),
+//   10, 11, 12 vrreg check: the cell changed (sensor moved, robot drifted, a monitor point moved).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <exception>
@@ -67,6 +68,9 @@ int main(int argc, char** argv) {
       help = "vrreg " + command->get_name() + " --help";
     std::cerr << "vrreg: usage error: " << message << " (see " << help << ")\n";
     return 2;
+  } catch (const vrreg::cli::CellChanged& e) {
+    std::cout.flush();
+    return e.status;
   } catch (const vrreg::cli::NoSolution& e) {
     std::cout.flush();
     std::cerr << "vrreg: " << e.what() << "\n";

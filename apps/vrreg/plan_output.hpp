@@ -29,6 +29,9 @@ struct PlanArgs {
   std::string export_format;              ///< robot program: urscript, krl or csv
   std::string program;                    ///< where to write it
   int repeats = 0;                        ///< tracker readings per location the program waits for
+  int monitor = 0;                        ///< monitor points to add (0: none)
+  int monitor_visits = 12;                ///< visits of each monitor point per reading
+  std::string monitor_program;            ///< the check's program (monitor points only)
   std::string output;
   bool json = false;
 };

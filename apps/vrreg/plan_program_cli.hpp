@@ -11,6 +11,9 @@ namespace vrreg::cli {
 void add_program_options(CLI::App& command, PlanArgs& args);
 
 /// The program of `plan` (visiting order) in the format of --export, for args.program.
-std::string plan_program(const PlanArgs& args, const planning::PlanResult& plan);
+/// The plan as a robot program (monitor points last, in rounds); `monitors_only`: the check's
+/// program, the monitor points alone.
+std::string plan_program(const PlanArgs& args, const planning::PlanResult& plan,
+                         bool monitors_only = false);
 
 }  // namespace vrreg::cli

@@ -10,6 +10,7 @@
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
 #include "vrreg/core/types.hpp"
+#include "vrreg/pipeline/check.hpp"
 #include "vrreg/pipeline/correct.hpp"
 #include "vrreg/pipeline/evaluate.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
@@ -18,3 +19,4 @@
 #include "vrreg/pipeline/points.hpp"
 #include "vrreg/pipeline/prepared_corrector.hpp"
 #include "vrreg/pipeline/register_fiducials.hpp"
+#include "vrreg/pipeline/update.hpp"

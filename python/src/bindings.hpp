@@ -23,5 +23,6 @@ void bind_simulation(py::module_& m);   // simulation.cpp: simulate
 void bind_experiments(py::module_& m);  // experiments.cpp: reproduce
 void bind_timing(py::module_& m);       // timing.cpp: C++-side timings for the benchmark
 void bind_hand_eye(py::module_& m);     // hand_eye.cpp: estimate_marker_offset
+void bind_monitoring(py::module_& m);   // monitoring.cpp: check, update
 
 }  // namespace vrreg::python

@@ -21,4 +21,5 @@ PYBIND11_MODULE(_vrreg, m) {
   bind_experiments(m);
   bind_timing(m);
   bind_hand_eye(m);
+  bind_monitoring(m);
 }

@@ -10,6 +10,7 @@ import json as _json
 
 from ._vrreg import (
     __version__,
+    CheckResult,
     CorrectResult,
     EvaluateResult,
     FileError,
@@ -21,6 +22,8 @@ from ._vrreg import (
     RHO_THRESHOLD,
     Simulation,
     StencilStatus,
+    UpdateResult,
+    check,
     correct,
     estimate_marker_offset,
     evaluate,
@@ -37,6 +40,7 @@ from ._vrreg import (
     robots,
     sigma_noise,
     simulate,
+    update,
 )
 from . import _vrreg
 from .client import Client, Correction, ServiceError
@@ -50,9 +54,9 @@ def reproduce(seed: int = 1, *, ur5: bool = True, lwr4: bool = True) -> dict:
 
 
 __all__ = [
-    "__version__", "Client", "Correction", "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
+    "__version__", "CheckResult", "Client", "Correction", "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
     "Plan", "RegisterResult", "RHO_THRESHOLD", "Simulation", "StencilStatus", "correct",
     "estimate_marker_offset", "evaluate", "fk", "ik", "improvement", "load_model", "model_from_json", "plan",
     "read_measurements", "register", "reproduce", "rho", "rigid_body_statistics", "robots",
-    "ServiceError", "sigma_noise", "simulate",
+    "ServiceError", "sigma_noise", "simulate", "UpdateResult", "check", "update",
 ]

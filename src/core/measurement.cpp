@@ -3,6 +3,18 @@
 
 namespace vrreg {
 
+const char* to_string(Role role) {
+  switch (role) {
+    case Role::kFiducial:
+      return "fiducial";
+    case Role::kTarget:
+      return "target";
+    case Role::kMonitor:
+      return "monitor";
+  }
+  return "fiducial";
+}
+
 std::vector<std::size_t> MeasurementSet::select(Role role, std::optional<int> config) const {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < locations.size(); ++i) {

@@ -18,6 +18,7 @@ MeasurementSet to_measurement_set(const simulation::SimulatedDataset& data) {
     loc.point = planned.point;
     loc.role = planned.role;
     if (data.has_config) loc.config = visit.config;
+    if (visit.round >= 0) loc.visit = visit.round;
     loc.robot_m = planned.robot_m;
     loc.source_line = v + 1;  // the visiting order, as a file's line order would give it
     loc.q_rad.assign(visit.q_rad.data(), visit.q_rad.data() + visit.q_rad.size());

@@ -12,7 +12,7 @@
 namespace vrreg::io::detail {
 namespace {
 
-const char* role_name(Role role) { return role == Role::kFiducial ? "fiducial" : "target"; }
+const char* role_name(Role role) { return to_string(role); }
 
 std::string mm_text(const Eigen::Vector3d& p_m) {
   return "(" + format_double(units::m_to_mm(p_m.x())) + ", " +
@@ -77,15 +77,17 @@ void LocationAccumulator::add(const MeasurementRow& row, std::size_t line) {
     check_point(entry, row, line);
   }
   std::size_t index = locations_.size();
-  for (const auto& [config, location_index] : entry.locations) {
-    if (config == row.config) index = location_index;
+  const std::pair<std::optional<int>, std::optional<int>> which{row.config, row.visit};
+  for (const auto& [config_visit, location_index] : entry.locations) {
+    if (config_visit == which) index = location_index;
   }
   if (index == locations_.size()) {
-    entry.locations.emplace_back(row.config, index);
+    entry.locations.emplace_back(which, index);
     Location& location = locations_.emplace_back();
     location.point = key_;
     location.role = row.role;
     location.config = row.config;
+    location.visit = row.visit;
     location.has_robot = has_robot_;
     location.robot_m = row.robot_m;
     location.q_rad = row.q_rad;

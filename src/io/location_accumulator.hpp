@@ -34,7 +34,9 @@ class LocationAccumulator {
     Role role;
     Eigen::Vector3d robot_m;
     std::size_t first_line;
-    std::vector<std::pair<std::optional<int>, std::size_t>> locations;  ///< config -> index
+    /// (config, visit) -> index into the locations
+    std::vector<std::pair<std::pair<std::optional<int>, std::optional<int>>, std::size_t>>
+        locations;
   };
 
   void check_point(const PointEntry& entry, const MeasurementRow& row, std::size_t line) const;

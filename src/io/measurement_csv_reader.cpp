@@ -86,6 +86,7 @@ MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source
   set.n_joints = static_cast<int>(columns->joints.size());
   set.has_config = columns->config != detail::MeasurementColumns::kAbsent;
   set.has_repeat = columns->repeat != detail::MeasurementColumns::kAbsent;
+  set.has_visit = columns->visit != detail::MeasurementColumns::kAbsent;
   return set;
 }
 

@@ -66,6 +66,9 @@ std::string format_measurement_csv(const std::vector<Reading>& readings,
     VRREG_THROW_UNLESS(r.repeat.has_value() == first.repeat.has_value(),
                        "reading " << i << ": repeat given for some readings but not all");
     VRREG_THROW_UNLESS(!r.repeat || *r.repeat >= 0, "reading " << i << ": negative repeat");
+    VRREG_THROW_UNLESS(r.visit.has_value() == first.visit.has_value(),
+                       "reading " << i << ": visit given for some readings but not all");
+    VRREG_THROW_UNLESS(!r.visit || *r.visit >= 0, "reading " << i << ": negative visit");
     VRREG_THROW_UNLESS(r.q_rad.size() == n_joints, "reading " << i << " has " << r.q_rad.size()
                                                               << " joint angles, reading 0 has "
                                                               << n_joints);
@@ -78,11 +81,13 @@ std::string format_measurement_csv(const std::vector<Reading>& readings,
   if (first.config) out += ",config";
   for (std::size_t k = 0; k < n_joints; ++k) out += ",q" + std::to_string(k + 1) + "_rad";
   if (first.repeat) out += ",repeat";
+  if (first.visit) out += ",visit";
   out += '\n';
   for (std::size_t i = 0; i < readings.size(); ++i) {
     const Reading& r = readings[i];
     out += r.point;
-    out += r.role == Role::kFiducial ? ",fiducial" : ",target";
+    out += ',';
+    out += to_string(r.role);
     if (r.has_robot) append_mm(out, r.robot_m, i);
     append_mm(out, r.sensor_m, i);
     if (r.config) out += "," + std::to_string(*r.config);
@@ -92,6 +97,7 @@ std::string format_measurement_csv(const std::vector<Reading>& readings,
       out += detail::format_double(q);
     }
     if (r.repeat) out += "," + std::to_string(*r.repeat);
+    if (r.visit) out += "," + std::to_string(*r.visit);
     out += '\n';
   }
   return out;

@@ -14,7 +14,8 @@ namespace {
 constexpr int kMaxJoints = 64;
 constexpr const char* kAllowed =
     "allowed: point, role, robot_x_mm, robot_y_mm, robot_z_mm, sensor_x_mm, sensor_y_mm, "
-    "sensor_z_mm (or all six with _m), config, q1_rad..qN_rad (or _deg), repeat, sensor_qx, sensor_qy, sensor_qz, sensor_qw";
+    "sensor_z_mm (or all six with _m), config, q1_rad..qN_rad (or _deg), repeat, visit, sensor_qx, "
+    "sensor_qy, sensor_qz, sensor_qw";
 
 // "sensor_qx".."sensor_qw": the marker's orientation quaternion (unitless); index x,y,z,w = 0..3.
 std::optional<int> orientation_column(const std::string& lower) {
@@ -102,11 +103,13 @@ class HeaderParser {
         fail("quoted column name " + shown + " (quoting is not supported)");
       }
       const std::string lower = to_lower(name);
-      if (lower == "point" || lower == "role" || lower == "config" || lower == "repeat") {
+      if (lower == "point" || lower == "role" || lower == "config" || lower == "repeat" ||
+          lower == "visit") {
         claim(lower, index, cols);
         (lower == "point"    ? cols.point
          : lower == "role"   ? cols.role
          : lower == "config" ? cols.config
+         : lower == "visit"  ? cols.visit
                              : cols.repeat) = index;
         continue;
       }

@@ -19,6 +19,7 @@ struct MeasurementColumns {
   std::array<int, 3> sensor{kAbsent, kAbsent, kAbsent};
   int config = kAbsent;
   int repeat = kAbsent;
+  int visit = kAbsent;
   std::vector<int> joints;   ///< q1..qN
   std::array<int, 4> orientation{kAbsent, kAbsent, kAbsent, kAbsent};  ///< sensor_qx..qw
   bool length_in_mm = true;  ///< _mm columns (else _m)

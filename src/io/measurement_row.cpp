@@ -73,8 +73,11 @@ class RowParser {
       row.role = Role::kFiducial;
     } else if (role == "target") {
       row.role = Role::kTarget;
+    } else if (role == "monitor") {
+      row.role = Role::kMonitor;
     } else {
-      fail("unknown role '" + printable(field(columns_.role)) + "' (expected fiducial or target)");
+      fail("unknown role '" + printable(field(columns_.role)) +
+           "' (expected fiducial, target or monitor)");
     }
     row.robot_m = columns_.has_robot() ? position_m(columns_.robot) : Eigen::Vector3d::Zero();
     row.sensor_m = position_m(columns_.sensor);
@@ -84,6 +87,11 @@ class RowParser {
     if (columns_.repeat != MeasurementColumns::kAbsent) {
       row.repeat = integer(columns_.repeat);
       if (*row.repeat < 0) fail("column '" + column_name(columns_.repeat) + "': negative repeat");
+    }
+    row.visit.reset();
+    if (columns_.visit != MeasurementColumns::kAbsent) {
+      row.visit = integer(columns_.visit);
+      if (*row.visit < 0) fail("column '" + column_name(columns_.visit) + "': negative visit");
     }
     row.q_rad.resize(columns_.joints.size());
     for (std::size_t k = 0; k < columns_.joints.size(); ++k) {

@@ -22,6 +22,7 @@ struct MeasurementRow {
   std::optional<int> config;
   std::vector<double> q_rad;
   std::optional<int> repeat;
+  std::optional<int> visit;
   std::optional<Eigen::Quaterniond> q_sensor_marker;  ///< normalised, when the file has it
 };
 

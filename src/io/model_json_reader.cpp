@@ -10,6 +10,7 @@
 #include "json_fields.hpp"
 #include "model_chain_json.hpp"
 #include "model_marker_offset_json.hpp"
+#include "model_monitoring_json.hpp"
 #include "model_units.hpp"
 #include "vrreg/core/progress.hpp"
 #include "vrreg/core/units.hpp"
@@ -241,6 +242,7 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
         detail::read_marker_offset(doc.at("marker_offset"), "marker_offset", f, u);
   }
   if (doc.contains("robot")) model.robot = detail::read_chain(doc.at("robot"), "robot", f);
+  detail::read_monitoring(doc, f, u, model);
   check_joint_model(model, f);
   if (doc.contains("corrector")) {
     const SavedCorrector saved = detail::read_corrector(doc.at("corrector"), "corrector", f);

@@ -6,6 +6,7 @@
 #include "corrector_json.hpp"
 #include "model_chain_json.hpp"
 #include "model_marker_offset_json.hpp"
+#include "model_monitoring_json.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/progress.hpp"
 #include "vrreg/core/units.hpp"
@@ -131,6 +132,7 @@ std::string format_model_json(const RegistrationModel& model) {
         model.fiducials[j], model.corrections_sensor_m.col(static_cast<Eigen::Index>(j))));
   }
   out["fiducials"] = std::move(fiducials);
+  detail::add_monitoring_json(model, out);
   if (model.corrector) out["corrector"] = detail::corrector_json(model.corrector->save());
   try {
     return out.dump(2) + "\n";

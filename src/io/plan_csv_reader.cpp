@@ -35,12 +35,14 @@ PlanRow parse_row(const std::vector<std::string_view>& fields, const detail::Poi
   row.point = detail::plan_label(detail::parse_point_label(field(fields, cols.point), source, line),
                                  "point", source, line);
   const std::string role = detail::to_lower(field(fields, cols.role));
-  if (role != "fiducial" && role != "target") {
+  if (role != "fiducial" && role != "target" && role != "monitor") {
     throw FileError(source, line,
-                    "role must be 'fiducial' or 'target', got '" +
+                    "role must be 'fiducial', 'target' or 'monitor', got '" +
                         detail::printable(field(fields, cols.role)) + "'");
   }
-  row.role = role == "target" ? Role::kTarget : Role::kFiducial;
+  row.role = role == "target"    ? Role::kTarget
+             : role == "monitor" ? Role::kMonitor
+                                 : Role::kFiducial;
   if (cols.part != detail::PointColumns::kAbsent) {
     row.part = detail::plan_label(field(fields, cols.part), "part", source, line);
   }

@@ -65,7 +65,9 @@ std::string format_plan_csv(const std::vector<PlanRow>& rows,
                        "plan row " << i << " has " << r.q_rad.size() << " joint angles, row 0 has "
                                    << first.q_rad.size());
     out += r.point;
-    out += r.role == Role::kFiducial ? ",fiducial," : ",target,";
+    out += ',';
+    out += to_string(r.role);
+    out += ',';
     out += r.part;
     for (int axis = 0; axis < 3; ++axis) append_number(out, units::m_to_mm(r.robot_m(axis)), i);
     if (r.config) out += "," + std::to_string(*r.config);

@@ -95,6 +95,14 @@ CorrectResult correct_points(const Corrector& corrector, const MeasuredPoints& p
   return out;
 }
 
+// The points as the model's corrector takes them: after a bump, in the registration's sensor frame.
+MeasuredPoints in_registered_frame(const RegistrationModel& model, const MeasuredPoints& points) {
+  if (!model.T_registered_sensor) return points;
+  MeasuredPoints out = points;
+  out.sensor_m = model.registered_sensor_points(points.sensor_m);
+  return out;
+}
+
 // Labels and joints decide which points and which fiducials: the set's way.
 CorrectResult correct_as_set(const RegistrationModel& model, const MeasuredPoints& points,
                              const CorrectOptions& options) {
@@ -115,8 +123,8 @@ CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& poin
   if (!corrects_point_by_point(model, options)) return correct_as_set(model, points, options);
   model.validate();
   const pipeline_detail::CorrectorRequest request = corrector_request(model, options);
-  return correct_points(pipeline_detail::corrector_for(model, request), points, request.settings,
-                        options.extrapolate);
+  return correct_points(pipeline_detail::corrector_for(model, request),
+                        in_registered_frame(model, points), request.settings, options.extrapolate);
 }
 
 PreparedCorrector::PreparedCorrector(std::shared_ptr<const RegistrationModel> model,
@@ -147,8 +155,8 @@ CorrectResult PreparedCorrector::correct(const MeasuredPoints& points, bool extr
     options.extrapolate = extrapolate;
     return correct_as_set(*model_, points, options);
   }
-  return correct_points(*corrector_, points, options_.interpolation.apply(model_->interpolation),
-                        extrapolate);
+  return correct_points(*corrector_, in_registered_frame(*model_, points),
+                        options_.interpolation.apply(model_->interpolation), extrapolate);
 }
 
 InterpolationMethod PreparedCorrector::method() const { return method_; }

@@ -39,10 +39,29 @@ void RegistrationModel::validate() const {
     VRREG_THROW_UNLESS(f.has_robot && f.robot_m.allFinite() && f.sensor_m.allFinite(),
                        "fiducial '" << f.point << "' has no finite position");
   }
+  for (const Location& m : monitors) {
+    VRREG_THROW_UNLESS(m.sensor_m.allFinite() && m.robot_m.allFinite() && m.n_readings >= 1,
+                       "monitor point '" << m.point << "' has no finite reading");
+  }
+  if (T_registered_sensor) {
+    const RigidTransform& M = *T_registered_sensor;
+    VRREG_THROW_UNLESS(M.rotation.allFinite() && M.translation_m.allFinite() &&
+                           (M.rotation.transpose() * M.rotation - Eigen::Matrix3d::Identity())
+                                   .cwiseAbs()
+                                   .maxCoeff() < 1e-9 &&
+                           M.rotation.determinant() > 0.0,
+                       "the model's sensor move (T_registered_sensor) is not a rotation and a "
+                       "finite translation");
+  }
   for (const std::size_t j : procedure2.registration_fiducials) {
     VRREG_THROW_UNLESS(j < fiducials.size(),
                        "registration fiducial " << j << " of " << fiducials.size());
   }
+}
+
+Points3 RegistrationModel::registered_sensor_points(const ConstPoints3Ref& sensor_m) const {
+  if (!T_registered_sensor) return sensor_m;
+  return T_registered_sensor->apply_all(sensor_m);
 }
 
 }  // namespace vrreg

@@ -39,8 +39,14 @@ void prepare_points(const RegistrationModel& model, const MeasurementSet& file_s
                     std::optional<int> config, bool robot_positions_required,
                     PointsToCorrect& out) {
   out.set = &file_set;
+  if (model.T_registered_sensor) {  // the sensor moved since registration: back to its frame
+    out.registered = file_set;
+    for (Location& l : out.registered.locations)
+      l.sensor_m = model.T_registered_sensor->apply(l.sensor_m);
+    out.set = &out.registered;
+  }
   if (model.marker_offset) {
-    out.moved = with_marker_offset(model, file_set, Role::kTarget, robot_positions_required);
+    out.moved = with_marker_offset(model, *out.set, Role::kTarget, robot_positions_required);
     out.set = &out.moved;
   }
   if (strategy == planning::Strategy::kAlongPath) {  // the points take the labels of their path

@@ -39,6 +39,7 @@ struct PointsToCorrect {
   const MeasurementSet* set = nullptr;  ///< the file's set, or one of the two below
   std::vector<std::size_t> rows;
   std::optional<planning::Strategy2Summary> relabelled;  ///< Strategy 2's relabelling
+  MeasurementSet registered;  ///< sensor positions in the registration's frame (after a bump)
   MeasurementSet moved;                                  ///< robot positions from the offset
   MeasurementSet relabelled_set;
 

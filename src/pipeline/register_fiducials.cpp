@@ -95,6 +95,9 @@ RegisterResult register_unchecked(const MeasurementSet& input, const RegisterOpt
   out.model.sigma_l_sampling = out.sigma_l_sampling;
   out.model.sigma_rep_m = options.sigma_rep_m;
   out.model.robot = options.robot;
+  // As read (never relabelled): a check's file names them the same way.
+  for (const std::size_t i : input.select(Role::kMonitor))
+    out.model.monitors.push_back(input.locations[i]);
   out.noise = noise_figures(sigma_opt_m(out.model.fiducials), options.sigma_rep_m,
                             out.rigid_body.sigma_l_m);  // Eq. 9
   // The corrector evaluate and correct use, fitted once here (auto: by cross-validation) and

@@ -14,7 +14,7 @@ void fail(const MeasurementSet& set, const std::string& message, std::size_t lin
 std::vector<std::size_t> select_rows(const MeasurementSet& set, Role role,
                                      std::optional<int> config) {
   std::vector<std::size_t> rows = set.select(role, config);
-  const std::string what = role == Role::kFiducial ? "fiducial" : "target";
+  const std::string what = to_string(role);
   if (config && !set.has_config) {
     fail(set, "`config` " + std::to_string(*config) + " given but the file has no config column");
   }

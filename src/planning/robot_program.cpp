@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <numbers>
@@ -14,7 +15,12 @@ namespace {
 
 double deg(double rad) { return rad * 180.0 / std::numbers::pi; }
 
-const char* role_name(Role role) { return role == Role::kTarget ? "target" : "fiducial"; }
+const char* role_name(Role role) { return to_string(role); }
+
+// " visit N" for points read in rounds (the measurement CSV's visit column), else nothing.
+std::string visit_text(const ProgramLocation& l) {
+  return l.visit >= 0 ? " visit " + std::to_string(l.visit) : std::string();
+}
 
 // Labels go into comments and strings: keep them printable, without quotes.
 std::string printable(const std::string& text) {
@@ -53,8 +59,8 @@ std::string urscript(const std::vector<ProgramLocation>& locations, const Progra
   for (std::size_t k = 0; k < n; ++k) {
     const ProgramLocation& l = locations[k];
     const std::string label = printable(l.point);
-    s += fmt::format("  # {}/{} {} {}{}\n", k + 1, n, label, role_name(l.role),
-                     l.config.empty() ? "" : " config " + printable(l.config));
+    s += fmt::format("  # {}/{} {} {}{}{}\n", k + 1, n, label, role_name(l.role),
+                     l.config.empty() ? "" : " config " + printable(l.config), visit_text(l));
     s += fmt::format("  textmsg(\"vrreg {}/{} {}\")\n", k + 1, n, label);
     s += "  movej([";
     for (Eigen::Index j = 0; j < 6; ++j) {
@@ -95,8 +101,8 @@ std::string krl(const std::vector<ProgramLocation>& locations, const ProgramOpti
   const std::size_t n = locations.size();
   for (std::size_t k = 0; k < n; ++k) {
     const ProgramLocation& l = locations[k];
-    s += fmt::format("  ; {}/{} {} {}{}\n", k + 1, n, printable(l.point), role_name(l.role),
-                     l.config.empty() ? "" : " config " + printable(l.config));
+    s += fmt::format("  ; {}/{} {} {}{}{}\n", k + 1, n, printable(l.point), role_name(l.role),
+                     l.config.empty() ? "" : " config " + printable(l.config), visit_text(l));
     s += "  PTP {";
     for (Eigen::Index j = 0; j < joints; ++j) {
       s += fmt::format("{}{} {:.9f}", j ? ", " : "", axes[static_cast<std::size_t>(j)],
@@ -118,13 +124,17 @@ std::string joint_csv(const std::vector<ProgramLocation>& locations, const Progr
   s += "order,point,role,config";
   for (Eigen::Index j = 0; j < joints; ++j) s += fmt::format(",q{}_rad", j + 1);
   for (Eigen::Index j = 0; j < joints; ++j) s += fmt::format(",q{}_deg", j + 1);
-  s += ",repeats\n";
+  s += ",repeats";
+  const bool visits = std::any_of(locations.begin(), locations.end(),
+                                  [](const ProgramLocation& l) { return l.visit >= 0; });
+  s += visits ? ",visit\n" : "\n";
   for (std::size_t k = 0; k < locations.size(); ++k) {
     const ProgramLocation& l = locations[k];
     s += fmt::format("{},{},{},{}", k + 1, l.point, role_name(l.role), l.config);
     for (Eigen::Index j = 0; j < joints; ++j) s += fmt::format(",{:.17g}", l.q_rad(j));
     for (Eigen::Index j = 0; j < joints; ++j) s += fmt::format(",{:.12g}", deg(l.q_rad(j)));
-    s += fmt::format(",{}\n", o.repeats);
+    s += fmt::format(",{}", o.repeats);
+    s += visits ? fmt::format(",{}\n", std::max(l.visit, 0)) : "\n";
   }
   return s;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/robot_io/simulation_csv.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -72,6 +73,9 @@ void describe_robot(const simulation::SimulatedDataset& data, std::vector<std::s
 
 std::vector<Reading> simulated_readings(const simulation::SimulatedDataset& data) {
   const bool with_config = data.has_config;
+  const bool with_visit =
+      std::any_of(data.visits.begin(), data.visits.end(),
+                  [](const simulation::SimulatedVisit& v) { return v.round >= 0; });
   std::vector<Reading> rows;
   rows.reserve(data.readings.size());
   for (const simulation::SimulatedReading& r : data.readings) {
@@ -86,6 +90,7 @@ std::vector<Reading> simulated_readings(const simulation::SimulatedDataset& data
     if (with_config) row.config = visit.config;
     row.q_rad.assign(visit.q_rad.data(), visit.q_rad.data() + visit.q_rad.size());
     row.repeat = r.repeat;
+    if (with_visit) row.visit = std::max(visit.round, 0);
     rows.push_back(std::move(row));
   }
   return rows;
@@ -96,13 +101,24 @@ std::vector<std::string> simulated_dataset_comments(const simulation::SimulatedD
   const bool lwr = data.dataset == simulation::Dataset::kGrid;
   out.push_back("vrreg simulate: test bed " + data.testbed + ", dataset " +
                 simulation::to_string(data.dataset) + ", seed " + std::to_string(data.seed));
-  std::size_t targets = 0;
-  for (const auto& l : data.locations) targets += l.role == Role::kTarget ? 1 : 0;
+  std::size_t targets = 0, monitors = 0;
+  for (const auto& l : data.locations) {
+    targets += l.role == Role::kTarget ? 1 : 0;
+    monitors += l.role == Role::kMonitor ? 1 : 0;
+  }
   out.push_back(std::to_string(data.locations.size()) + " nominal locations (" +
-                std::to_string(data.locations.size() - targets) + " fiducials, " +
-                std::to_string(targets) + " targets), " + std::to_string(data.visits.size()) +
-                " visits, " + std::to_string(data.readings.size()) +
-                " readings; rows in visiting order");
+                std::to_string(data.locations.size() - targets - monitors) + " fiducials, " +
+                std::to_string(targets) + " targets" +
+                (monitors > 0 ? ", " + std::to_string(monitors) + " monitor points" : "") + "), " +
+                std::to_string(data.visits.size()) + " visits, " +
+                std::to_string(data.readings.size()) + " readings; rows in visiting order");
+  if (data.time_s != 0.0) {
+    const bool bumped = data.time_s >= data.events.bump_time_s && data.events.bump_rms_m > 0.0;
+    out.push_back("read " + g(data.time_s / 3600.0, 6) + " h after time 0: links grown by " +
+                  g(data.events.thermal.growth_at(data.time_s), 6) + ", tracker " +
+                  (bumped ? "bumped " + g(1e3 * data.events.bump_rms_m, 6) + " mm RMS"
+                          : std::string("as at time 0")));
+  }
   if (data.dataset == simulation::Dataset::kPlan) {
     out.push_back("a plan measured as written: commanded joints and config from the plan");
   } else if (lwr) {

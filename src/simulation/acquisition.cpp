@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/simulation/acquisition.hpp"
 
+#include <bit>
 #include <sstream>
 
 #include "acquisition_detail.hpp"
@@ -79,6 +80,8 @@ SimulatedDataset simulate_dataset(const Testbed& testbed, Dataset dataset,
   data.sigma_rep_spec_m = testbed.sigma_rep_spec_m;
   data.has_config = testbed.kind == TestbedKind::kLwr4;
   data.marker_flange_m = options.marker_flange_m;
+  data.time_s = options.time_s;
+  data.events = options.events;
 
   data.locations = plan_dataset(testbed, dataset);
   if (testbed.kind == TestbedKind::kUr5) {
@@ -101,14 +104,24 @@ void acquire_visits(const Testbed& testbed, SimulatedDataset& data) {
     VRREG_THROW_UNLESS(data.marker_flange_m->allFinite(), "the marker offset must be finite");
     T_flange_marker.translation() = *data.marker_flange_m;
   }
-  const SimulatedRobot robot(testbed.nominal.with_tool(T_flange_marker), data.errors.robot,
-                             data.robot);
+  data.events.validate();
+  VRREG_THROW_UNLESS(std::isfinite(data.time_s), "the acquisition time must be finite");
+  RobotErrorModel at_time = data.errors.robot;  // warmed up (or cooled) by time_s
+  at_time.link_growth += data.events.thermal.growth_at(data.time_s);
+  const SimulatedRobot robot(testbed.nominal.with_tool(T_flange_marker), at_time, data.robot);
   data.T_robot_sensor = tracker_pose(data.errors.tracker, testbed.volume_centre_m);
+  if (data.time_s >= data.events.bump_time_s && data.events.bump_rms_m > 0.0) {
+    const RigidTransform T_after_before =
+        testbed_bump(testbed, data.T_robot_sensor, data.events.bump_rms_m, data.seed);
+    data.T_robot_sensor = data.T_robot_sensor * T_after_before.inverse();
+  }
   const RigidTransform T_sensor_robot = data.T_robot_sensor.inverse();
 
+  // Another time, other noise: the streams of time 0 are those of every run before time existed.
   const auto dataset_index = static_cast<std::uint64_t>(data.dataset);
-  Random visit_rng = Random::stream(data.seed, kVisitStream + dataset_index);
-  Random reading_rng = Random::stream(data.seed, kReadingStream + dataset_index);
+  const std::uint64_t at = data.time_s == 0.0 ? 0 : std::bit_cast<std::uint64_t>(data.time_s);
+  Random visit_rng = Random::stream(data.seed ^ at, kVisitStream + dataset_index);
+  Random reading_rng = Random::stream(data.seed ^ at, kReadingStream + dataset_index);
   const TrackerModel& tracker = data.errors.tracker;
   const int k = tracker.readings_per_location;
   data.readings.reserve(data.visits.size() * static_cast<std::size_t>(k));

@@ -44,15 +44,31 @@ SimulatedDataset simulate_plan(const Testbed& testbed, const std::vector<Command
   data.sigma_rep_spec_m = testbed.sigma_rep_spec_m;
   data.has_config = plan.front().config.has_value();
   data.marker_flange_m = options.marker_flange_m;
+  data.time_s = options.time_s;
+  data.events = options.events;
+  VRREG_THROW_UNLESS(options.monitor_visits >= 1,
+                     "`monitor_visits` must be >= 1, got " << options.monitor_visits);
   std::set<std::pair<std::string, int>> seen;
+  std::vector<int> monitors;
   for (std::size_t n = 0; n < plan.size(); ++n) {
     const CommandedLocation& c = plan[n];
     check_location(testbed, c, data.has_config);
     VRREG_THROW_UNLESS(seen.insert({c.point, c.config.value_or(0)}).second,
                        "plan location '" << c.point << "' is listed twice");
     data.locations.push_back({c.point, c.role, c.robot_m, -1, 0.0});
+    if (c.role == Role::kMonitor) {
+      monitors.push_back(static_cast<int>(n));
+      continue;
+    }
     data.visits.push_back(
         {static_cast<int>(n), c.config.value_or(0), c.q_rad, Eigen::Vector3d::Zero()});
+  }
+  // Monitor points last, in rounds: the arm leaves each and comes back (docs/monitoring.md).
+  for (int round = 0; round < options.monitor_visits; ++round) {
+    for (const int n : monitors) {
+      const CommandedLocation& c = plan[static_cast<std::size_t>(n)];
+      data.visits.push_back({n, c.config.value_or(0), c.q_rad, Eigen::Vector3d::Zero(), round});
+    }
   }
   detail::acquire_visits(testbed, data);
   return data;

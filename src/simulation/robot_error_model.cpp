@@ -37,6 +37,9 @@ void RobotErrorModel::validate(int n_joints) const {
   check_value(twist_sigma_rad, "twist sigma");
   check_value(repeatability_sigma_m, "repeatability sigma");
   check_value(payload_kg, "payload");
+  VRREG_THROW_UNLESS(
+      std::isfinite(link_growth) && link_growth > -0.01,
+      "robot error model: link growth must be finite and > -0.01, got " << link_growth);
   if (!transmission_amplitude_rad.empty() || !transmission_period_rad.empty()) {
     check_list(transmission_amplitude_rad, n_joints, "transmission amplitude", false);
     check_list(transmission_period_rad, n_joints, "transmission period", true);
@@ -50,7 +53,7 @@ void RobotErrorModel::validate(int n_joints) const {
 bool RobotErrorModel::is_perfect() const {
   bool no_transmission = true;
   for (double a : transmission_amplitude_rad) no_transmission = no_transmission && a == 0.0;
-  return joint_offset_sigma_rad == 0.0 && link_length_sigma_m == 0.0 &&
+  return link_growth == 0.0 && joint_offset_sigma_rad == 0.0 && link_length_sigma_m == 0.0 &&
          link_offset_sigma_m == 0.0 && twist_sigma_rad == 0.0 && repeatability_sigma_m == 0.0 &&
          no_transmission && !compliance;
 }

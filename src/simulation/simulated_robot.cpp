@@ -12,8 +12,8 @@
 namespace vrreg::simulation {
 namespace {
 
-kinematics::SerialChain perturbed(const kinematics::SerialChain& nominal,
-                                  const RobotErrors& errors) {
+kinematics::SerialChain perturbed(const kinematics::SerialChain& nominal, const RobotErrors& errors,
+                                  double growth) {
   VRREG_THROW_UNLESS(errors.dh_delta.size() == static_cast<std::size_t>(nominal.n_joints()),
                      "simulated robot: " << errors.dh_delta.size() << " DH errors for "
                                          << nominal.n_joints() << " joints");
@@ -24,6 +24,8 @@ kinematics::SerialChain perturbed(const kinematics::SerialChain& nominal,
     rows[i].alpha_rad += d.alpha_rad;
     rows[i].d_m += d.d_m;
     rows[i].theta_offset_rad += d.theta_offset_rad;
+    rows[i].a_m *= 1.0 + growth;  // thermal growth of the link
+    rows[i].d_m *= 1.0 + growth;
   }
   return kinematics::SerialChain(nominal.name() + "-actual", std::move(rows), nominal.limits(),
                                  nominal.T_base_dh0(), nominal.T_flange_tcp());
@@ -34,7 +36,7 @@ kinematics::SerialChain perturbed(const kinematics::SerialChain& nominal,
 SimulatedRobot::SimulatedRobot(kinematics::SerialChain nominal, RobotErrorModel model,
                                RobotErrors errors)
     : nominal_(std::move(nominal)),
-      actual_(perturbed(nominal_, errors)),
+      actual_(perturbed(nominal_, errors, model.link_growth)),
       model_(std::move(model)),
       errors_(std::move(errors)) {
   model_.validate(nominal_.n_joints());

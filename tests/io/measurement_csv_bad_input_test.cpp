@@ -153,7 +153,7 @@ TEST_F(BadCsv, EmptyPointLabel) {
 }
 TEST_F(BadCsv, UnknownRole) {
   EXPECT_TRUE(fails(kBadInputHeader + "P1,fiducal,1,2,3,4,5,6\n", 2,
-                    "unknown role 'fiducal' (expected fiducial or target)"));
+                    "unknown role 'fiducal' (expected fiducial, target or monitor)"));
 }
 TEST_F(BadCsv, AbbreviatedRoleIsNotAccepted) {
   EXPECT_TRUE(fails(kBadInputHeader + "P1,f,1,2,3,4,5,6\n", 2, "unknown role 'f'"));

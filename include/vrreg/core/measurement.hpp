@@ -12,14 +12,22 @@
 
 namespace vrreg {
 
-/// What a location is used for: fiducials build the registration, targets test it.
-enum class Role { kFiducial, kTarget };
+/// What a location is used for: fiducials build the registration, targets test it, monitor
+/// points are read again later to check that the registration still holds.
+enum class Role { kFiducial, kTarget, kMonitor };
 
-/// One measured location: a (point, config) pair with its repeat readings averaged.
+/// The role's name in files ("fiducial", "target", "monitor").
+const char* to_string(Role role);
+
+/// One measured location: a (point, config, visit) triple with its repeat readings averaged.
 struct Location {
   std::string point{};  ///< point label from the file
   Role role = Role::kFiducial;
   std::optional<int> config{};    ///< arm configuration label, when the file has one
+  /// Which visit of the point this is, when the file numbers visits: the arm left and came back,
+  /// so the robot's repeatability differs between visits (monitor points are visited several
+  /// times).
+  std::optional<int> visit{};
   bool has_robot = true;          ///< false for points measured in the sensor frame only
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();   ///< nominal (commanded) position, robot frame
   Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();  ///< mean measured position, sensor frame
@@ -40,6 +48,7 @@ struct MeasurementSet {
   int n_joints = 0;               ///< joint columns in the file (0 when none)
   bool has_config = false;
   bool has_repeat = false;
+  bool has_visit = false;
 
   /// Indices of the locations with this role and, if given, this configuration label.
   [[nodiscard]] std::vector<std::size_t> select(Role role, std::optional<int> config = {}) const;

@@ -22,6 +22,7 @@ struct Reading {
   std::optional<int> config{};  ///< arm configuration label (all readings or none)
   std::vector<double> q_rad{};  ///< joint angles [rad] (same count in every reading)
   std::optional<int> repeat{};  ///< repeat index >= 0 (all readings or none)
+  std::optional<int> visit{};   ///< visit index >= 0 (all readings or none)
 };
 
 /// The CSV text: `comments` as `# ` lines first, then the header and one row per reading.

@@ -18,6 +18,17 @@
 
 namespace vrreg {
 
+/// One update of a registered model from a few points read later (pipeline/update.hpp): its
+/// lineage, so that a model says which model it came from, from which points and when.
+struct ModelUpdate {
+  std::string change{};               ///< "bump" (the sensor moved) or "drift" (the robot changed)
+  std::string parent{};               ///< the model it was made from (file name, or as given)
+  std::string points_source{};        ///< the file of the readings it used
+  std::vector<std::string> points{};  ///< the points it used ("name" or "name@config")
+  std::string time{};                 ///< when, as given (ISO 8601)
+  double fit_rms_m = 0.0;             ///< RMS residual of the update's fit [m]
+};
+
 /// Everything needed to correct new targets: the registration and the fiducial corrections.
 struct RegistrationModel {
   static constexpr int kFormatVersion = 2;
@@ -44,11 +55,20 @@ struct RegistrationModel {
   /// correct use it without fitting again; empty when none was fitted (the default linear
   /// interpolation could not be used on these fiducials, or the model was built by hand).
   std::optional<Corrector> corrector{};
+  /// Monitor points read when the model was registered, one Location per visit (sensor frame of
+  /// the registration): today's readings of them are compared with these (pipeline/check.hpp).
+  std::vector<Location> monitors{};
+  /// After the sensor moved (a bump, pipeline/update.hpp): today's sensor frame -> the frame the
+  /// fiducials were read in, applied to every point before it is corrected; empty: unmoved.
+  std::optional<RigidTransform> T_registered_sensor{};
+  std::vector<ModelUpdate> lineage{};  ///< the updates since registration, oldest first
 
   /// What RRBC interpolates (Eq. 6-8): the transform, fiducial positions, corrections, order.
   [[nodiscard]] CorrectionField correction_field() const;
   /// Throws InputError when the parts disagree (counts, non-finite values, no fiducials).
   void validate() const;
+  /// `sensor_m` (today's sensor frame) in the frame the fiducials were read in [m].
+  [[nodiscard]] Points3 registered_sensor_points(const ConstPoints3Ref& sensor_m) const;
 };
 
 /// The corrector `saved` describes, restored on the model's fiducials without fitting (what io

@@ -23,6 +23,7 @@ struct ProgramLocation {
   Role role = Role::kFiducial;
   std::string config{};             ///< configuration label, empty when none
   kinematics::JointVector q_rad{};  ///< commanded joints [rad]
+  int visit = -1;  ///< which visit of a point read in rounds (monitor points); -1: not numbered
 };
 
 /// How the program moves and waits.

@@ -11,6 +11,7 @@
 
 #include "vrreg/core/types.hpp"
 #include "vrreg/kinematics/joint_vector.hpp"
+#include "vrreg/simulation/cell_events.hpp"
 #include "vrreg/simulation/dataset_plan.hpp"
 #include "vrreg/simulation/robot_error_model.hpp"
 #include "vrreg/simulation/testbed.hpp"
@@ -25,6 +26,13 @@ struct SimulationOptions {
   /// tool says (the paper's precision mount). Set it to simulate a cell whose offset is unknown:
   /// the file's robot positions stay the controller's TCP, the tracker sees the real marker.
   std::optional<Eigen::Vector3d> marker_flange_m = std::nullopt;
+  /// Plans: visits of each monitor location (role monitor), read in rounds after the others.
+  int monitor_visits = 12;
+  /// When this acquisition is made [s after time 0]: the robot has grown by
+  /// events.thermal.growth_at(time_s), the tracker is bumped when time_s >= events.bump_time_s,
+  /// and the noise is drawn afresh (time 0 draws exactly what it always did).
+  double time_s = 0.0;
+  CellEvents events{};
 };
 
 /// A realistic unknown marker offset for the hand-eye scenario: a marker clamped to the gripper
@@ -37,6 +45,7 @@ struct SimulatedVisit {
   int config = 0;    ///< LWR grid: label 1..4 in the IK module's order; plan: its config; else 0
   kinematics::JointVector q_rad{};  ///< commanded joints, as the controller reports them [rad]
   Eigen::Vector3d tcp_m = Eigen::Vector3d::Zero();  ///< true TCP position of the visit [m, base]
+  int round = -1;  ///< monitor locations: which of their visits this is; -1 for the others
 };
 
 /// One tracker reading of a visit.
@@ -57,6 +66,8 @@ struct SimulatedDataset {
   /// The true marker position in the flange frame [m] when options gave one; empty: the tool's.
   std::optional<Eigen::Vector3d> marker_flange_m{};
   double sigma_rep_spec_m = 0.0;  ///< the robot's specified repeatability
+  double time_s = 0.0;            ///< when it was acquired (SimulationOptions::time_s)
+  CellEvents events{};            ///< what had happened by then
   bool has_config = false;  ///< visits carry configuration labels (LWR grid; plans with config)
   std::vector<PlannedLocation> locations{};
   std::vector<SimulatedVisit> visits{};

@@ -39,9 +39,12 @@ struct RobotErrorModel {
   std::vector<double> joint_stiffness_nm_per_rad{};
   /// Mass at the TCP [kg] (the tracked sphere and its mount).
   double payload_kg = 0.0;
+  /// Thermal growth: every link length (DH a) and offset (DH d) of the actual robot is longer by
+  /// this fraction (alpha dT; aluminium 2.3e-5 per kelvin). Set per time by cell_events.hpp.
+  double link_growth = 0.0;
 
-  /// Throws InputError unless every value is finite and non-negative and every per-joint list
-  /// has `n_joints` entries (transmission lists may both be empty).
+  /// Throws InputError unless every value is finite and non-negative (link_growth: above -0.01)
+  /// and every per-joint list has `n_joints` entries (transmission lists may both be empty).
   void validate(int n_joints) const;
   /// True when the drawn robot would be the nominal one and every visit lands exactly.
   [[nodiscard]] bool is_perfect() const;

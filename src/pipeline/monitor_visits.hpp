@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Monitor points read then (the model) and today (a file), paired by (point, config): the mean of
+// each one's visits and the scatter of the visits about their means.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vrreg/core/measurement.hpp"
+#include "vrreg/pipeline/model.hpp"
+
+namespace vrreg::pipeline_detail {
+
+/// One monitor point read then and today (sensor frame of the registration) [m].
+struct MonitorPair {
+  std::string point;
+  std::optional<int> config;
+  Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d baseline_m = Eigen::Vector3d::Zero();  ///< mean of the visits at registration
+  Eigen::Vector3d today_m = Eigen::Vector3d::Zero();     ///< mean of today's visits
+  int baseline_visits = 0;
+  int today_visits = 0;
+};
+
+/// The pairs in the model's order, with the visits' pooled scatter (both times).
+struct MonitorPairs {
+  std::vector<MonitorPair> points;
+  double scatter_m2 = 0.0;   ///< sum over points and times of |visit - its mean|^2
+  double scatter_dof = 0.0;  ///< 3 (visits - 1) summed over points and times
+  int model_points = 0;      ///< distinct monitor points the model has
+};
+
+/// Pairs today's monitor rows with the model's; throws (naming today's file and line) when the
+/// model has none, today has none, or today has one the model does not.
+MonitorPairs monitor_pairs(const RegistrationModel& model, const MeasurementSet& today);
+
+}  // namespace vrreg::pipeline_detail
