@@ -2,12 +2,11 @@
 #include "vrreg/experiments/drift_study.hpp"
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "seed_cells.hpp"
 #include "text_table.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/random.hpp"
@@ -204,19 +203,13 @@ DriftStudy drift_study(const DriftStudyOptions& options) {
   options.validate();
   DriftStudy study;
   study.options = options;
-  const auto n_seeds = static_cast<std::size_t>(options.seeds);
-  constexpr std::size_t kCount = std::size(kDriftScenarios);
-  std::vector<DriftStudyCell> cells(n_seeds * kCount);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_seeds, 1),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t s = range.begin(); s < range.end(); ++s) {
-                        const std::uint64_t seed = options.first_seed + s;
-                        const DriftCell cell = make_cell(seed, options);
-                        for (std::size_t k = 0; k < kCount; ++k)
-                          cells[k * n_seeds + s] = run(cell, seed, kDriftScenarios[k], options);
-                      }
-                    });
-  study.cells = std::move(cells);
+  study.cells = detail::seed_cells<DriftStudyCell>(
+      options.first_seed, static_cast<std::size_t>(options.seeds),
+      std::span<const DriftScenario>(kDriftScenarios),
+      [&](std::uint64_t seed) { return make_cell(seed, options); },
+      [&](const DriftCell& cell, std::uint64_t seed, DriftScenario scenario) {
+        return run(cell, seed, scenario, options);
+      });
   return study;
 }
 

@@ -2,12 +2,11 @@
 #include "vrreg/experiments/robust_study.hpp"
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "seed_cells.hpp"
 #include "text_table.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/random.hpp"
@@ -120,24 +119,19 @@ RobustStudy robust_study(const RobustStudyOptions& options) {
   options.validate();
   RobustStudy study;
   study.options = options;
-  const auto n_seeds = static_cast<std::size_t>(options.seeds);
-  constexpr std::size_t kScenarioCount = std::size(kScenarios);
-  std::vector<RobustStudyCell> cells(n_seeds * kScenarioCount);
   const simulation::Testbed testbed = simulation::ur5_testbed();
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_seeds, 1),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t s = range.begin(); s < range.end(); ++s) {
-                        const std::uint64_t seed = options.first_seed + s;
-                        simulation::SimulationOptions sim;
-                        sim.seed = seed;
-                        const MeasurementSet clean = to_measurement_set(
-                            simulation::simulate_dataset(testbed, simulation::Dataset::kA1, sim));
-                        for (std::size_t k = 0; k < kScenarioCount; ++k) {
-                          cells[k * n_seeds + s] = run_cell(clean, seed, kScenarios[k], options);
-                        }
-                      }
-                    });
-  study.cells = std::move(cells);
+  study.cells = detail::seed_cells<RobustStudyCell>(
+      options.first_seed, static_cast<std::size_t>(options.seeds),
+      std::span<const RobustScenario>(kScenarios),
+      [&](std::uint64_t seed) {
+        simulation::SimulationOptions sim;
+        sim.seed = seed;
+        return to_measurement_set(
+            simulation::simulate_dataset(testbed, simulation::Dataset::kA1, sim));
+      },
+      [&](const MeasurementSet& clean, std::uint64_t seed, RobustScenario scenario) {
+        return run_cell(clean, seed, scenario, options);
+      });
   return study;
 }
 

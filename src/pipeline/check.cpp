@@ -2,8 +2,6 @@
 #include "vrreg/pipeline/check.hpp"
 
 #include <cmath>
-#include <map>
-#include <utility>
 
 #include "monitor_visits.hpp"
 #include "set_rows.hpp"

@@ -74,6 +74,9 @@ MonitorPairs monitor_pairs(const RegistrationModel& model, const MeasurementSet&
     p.robot_m = before.robot_m;
     p.baseline_m = mean_of(before, out.scatter_m2, out.scatter_dof);
     p.today_m = mean_of(it->second, out.scatter_m2, out.scatter_dof);
+    p.today_as_read_m = model.T_registered_sensor
+                            ? model.T_registered_sensor->inverse().apply(p.today_m)
+                            : p.today_m;
     p.baseline_visits = static_cast<int>(before.means_m.size());
     p.today_visits = static_cast<int>(it->second.means_m.size());
     out.points.push_back(std::move(p));

@@ -18,6 +18,7 @@ struct MonitorPair {
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d baseline_m = Eigen::Vector3d::Zero();  ///< mean of the visits at registration
   Eigen::Vector3d today_m = Eigen::Vector3d::Zero();     ///< mean of today's visits
+  Eigen::Vector3d today_as_read_m = Eigen::Vector3d::Zero();  ///< the same in today's sensor frame
   int baseline_visits = 0;
   int today_visits = 0;
 };

@@ -35,11 +35,7 @@ Pairs pairs_of(const RegistrationModel& model, const MeasurementSet& today, bool
   if (!today.select(Role::kMonitor).empty()) {
     const pipeline_detail::MonitorPairs m = pipeline_detail::monitor_pairs(model, today);
     for (const pipeline_detail::MonitorPair& p : m.points) {
-      // monitor_pairs maps today's readings to the registration's frame; a bump fit needs them
-      // as read.
-      now.push_back(today_frame && model.T_registered_sensor
-                        ? model.T_registered_sensor->inverse().apply(p.today_m)
-                        : p.today_m);
+      now.push_back(today_frame ? p.today_as_read_m : p.today_m);
       then.push_back(p.baseline_m);
       robot.push_back(p.robot_m);
       weights.push_back(1.0 / (1.0 / p.baseline_visits + 1.0 / p.today_visits));

@@ -122,6 +122,14 @@ TEST(Monitoring, ABumpIsFoundAndUndoneToRounding) {
   // Checked again against the updated model, the bumped cell is valid.
   EXPECT_EQ(check_cell(u.model, only(bumped, Role::kMonitor), options).statistics.verdict,
             MonitorVerdict::kValid);
+  // A second bump of the updated model: the move is fitted to the registration's frame again.
+  const RigidTransform second(Eigen::AngleAxisd(-4e-5, Eigen::Vector3d::UnitY()).toRotationMatrix(),
+                              Eigen::Vector3d(-2e-5, 4e-5, 1e-5));
+  const MeasurementSet twice = cell(second * T_after_before * T_sensor_robot, nullptr);
+  const UpdateResult u2 = update_model(u.model, only(twice, Role::kMonitor), update);
+  ASSERT_EQ(u2.model.lineage.size(), 2u);
+  EXPECT_EIGEN_NEAR(evaluate(u2.model, twice).correction.corrected_robot_m,
+                    before.correction.corrected_robot_m, 1e-12);
 }
 
 TEST(Monitoring, AnAffineDriftIsRecoveredToRounding) {
