@@ -86,6 +86,15 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   std::printf("  max TRE                       %8s mm  %8s mm\n",
               format_mm(s.unc_max_tre_m).c_str(), format_mm(s.cor_max_tre_m).c_str());
   print_predicted_sd(c, r.calibration);
+  if (r.orientation) {
+    const OrientationEvaluation& o = *r.orientation;
+    std::printf("  RMS angle (orientation)       %8.3f mrad %6.3f mrad\n", 1e3 * o.unc_rms_rad,
+                1e3 * o.cor_rms_rad);
+    if (o.calibration.n > 0) {
+      std::printf("  angle / predicted sd          RMS %.2f (1 = honest), %.0f %% within 2 sd\n",
+                  o.calibration.rms_ratio, 100.0 * o.calibration.within_2sigma);
+    }
+  }
   std::printf("  gamma = (unc - cor) / unc     %.1f %%\n", 100.0 * s.gamma);
   std::printf("  N_bad (TRE got worse)         %d of %d", s.n_bad, s.n_targets);
   if (!bad.empty()) {

@@ -36,6 +36,7 @@ struct SimulateArgs {
   double bump_mm = 0.0;
   double bump_at_h = 0.0;
   double warmup_growth = 0.0;
+  double rigid_body_mm = 0.0;
   double warmup_tau_h = 0.5;
   double daily_growth = 0.0;
   std::string only;
@@ -89,6 +90,10 @@ void run_simulate(const SimulateArgs& args) {
     options.marker_flange_m = simulation::kRealisticMarkerFlangeM;
   }
   if (!args.errors.empty()) options.errors = io::read_error_model_file(args.errors, testbed);
+  if (args.rigid_body_mm > 0.0) {
+    options.errors = options.errors.value_or(testbed.default_errors);
+    options.errors->tracker.rigid_body_radius_m = 1e-3 * args.rigid_body_mm;
+  }
   // Time: a check hours after registration sees the warm-up and any bump since.
   constexpr double kSecondsPerHour = 3600.0;
   options.monitor_visits = args.monitor_visits;
@@ -207,6 +212,11 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--daily-growth", args->daily_growth,
                   "amplitude of the day's relative link growth (24 h period)")
       ->check(CLI::Range(-0.005, 0.005));
+  cmd->add_option("--rigid-body-mm", args->rigid_body_mm,
+                  "track a rigid body of 4 spheres on a circle of this radius, mm, about the "
+                  "marker: adds the measured (sensor_q*) and commanded (robot_q*) orientations; "
+                  "positions stay as without it")
+      ->check(CLI::Range(0.0, 1000.0));
   add_seed_option(*cmd, "--seed", args->seed,
                   "draws the robot's errors and the noise; the same seed gives the same file")
       ->capture_default_str();

@@ -3,6 +3,8 @@
 // arrays as read-only numpy views of the C++ result (no copy; the result stays alive with them).
 #include <pybind11/stl.h>
 
+#include <type_traits>
+
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "vrreg/core/units.hpp"
@@ -80,6 +82,45 @@ py::object of_corrected(const EvaluateResult& r, double value) {
   return r.summary.n_targets > 0 ? py::object(py::float_(value)) : py::object(py::none());
 }
 
+// (N, 3, 3) rotation matrices, robot frame.
+py::array_t<double> rotations(const std::vector<Eigen::Matrix3d>& r) {
+  py::array_t<double> out({static_cast<py::ssize_t>(r.size()), py::ssize_t{3}, py::ssize_t{3}});
+  auto a = out.mutable_unchecked<3>();
+  for (std::size_t k = 0; k < r.size(); ++k)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) a(static_cast<py::ssize_t>(k), i, j) = r[k](i, j);
+  return out;
+}
+
+// A vector as a 1-D array, or None when empty.
+py::object array_or_none(const Eigen::VectorXd& v) {
+  if (v.size() == 0) return py::none();
+  return py::array_t<double>(v.size(), v.data());
+}
+
+// The corrected orientations (rigid-body markers), or None (docs/orientation.md).
+py::object orientation_dict(const std::optional<OrientationCorrection>& o) {
+  if (!o) return py::none();
+  py::dict d;
+  d["R_robot_marker_corrected"] = rotations(o->corrected_R_robot_marker);
+  d["R_robot_marker_uncorrected"] = rotations(o->uncorrected_R_robot_marker);
+  py::array_t<double> q(
+      {static_cast<py::ssize_t>(o->corrected_R_robot_marker.size()), py::ssize_t{4}});
+  auto qa = q.mutable_unchecked<2>();
+  for (std::size_t k = 0; k < o->corrected_R_robot_marker.size(); ++k) {
+    const Eigen::Quaterniond qk(o->corrected_R_robot_marker[k]);
+    for (int i = 0; i < 4; ++i) qa(static_cast<py::ssize_t>(k), i) = qk.coeffs()(i);
+  }
+  d["q_robot_marker_corrected"] = q;
+  Eigen::MatrixXd rotation = o->corrections_robot_rad.transpose();
+  d["rotation_robot"] =
+      py::array_t<double>({rotation.rows(), rotation.cols()},
+                          {sizeof(double), sizeof(double) * rotation.rows()}, rotation.data());
+  d["predicted_angle_sd"] = array_or_none(o->predicted_sd_rad);
+  d["n_flagged"] = o->n_flagged;
+  return d;
+}
+
 // What evaluate and correct share: the interpolation used and the corrected points.
 template <typename Result>
 void bind_correction_members(py::class_<Result>& c) {
@@ -116,7 +157,22 @@ void bind_correction_members(py::class_<Result>& c) {
       .def_property_readonly(
           "cross_validation",
           [](const Result& r) { return cross_validation_dict(r.cross_validation); },
-          "interpolation 'auto': the K-fold cross-validation table [m] and its choice (dict)");
+          "interpolation 'auto': the K-fold cross-validation table [m] and its choice (dict)")
+      .def_property_readonly(
+          "orientation",
+          [](const Result& r) {
+            if constexpr (std::is_same_v<Result, EvaluateResult>) {
+              return orientation_dict(r.orientation ? std::optional(r.orientation->correction)
+                                                    : std::nullopt);
+            } else {
+              return orientation_dict(r.orientation);
+            }
+          },
+          "rigid-body markers (a file with sensor_q and robot_q columns): the corrected "
+          "orientations, robot frame: R_robot_marker_corrected (N, 3, 3), what to command, "
+          "R_robot_marker_uncorrected (N, 3, 3), q_robot_marker_corrected (N, 4) x y z w, "
+          "rotation_robot (N, 3) the rotation applied [rad], predicted_angle_sd (N,) [rad] or "
+          "None, n_flagged (dict); None without orientations");
   points_property(
       c, "corrected",
       [](const Result& r) -> const Points3& { return r.correction.corrected_robot_m; },
@@ -276,6 +332,23 @@ void bind_results(py::module_& m) {
           },
           "field models: RMS of TRE / predicted sd (1 = calibrated) and the fraction within "
           "2 sd (dict), else None")
+      .def_property_readonly(
+          "angle_errors",
+          [](const EvaluateResult& r) -> py::object {
+            if (!r.orientation) return py::none();
+            const OrientationEvaluation& o = *r.orientation;
+            py::dict d;
+            d["unc"] = py::array_t<double>(o.unc_error_rad.size(), o.unc_error_rad.data());
+            d["cor"] = py::array_t<double>(o.cor_error_rad.size(), o.cor_error_rad.data());
+            d["unc_rms"] = o.unc_rms_rad;
+            d["cor_rms"] = o.cor_rms_rad;
+            d["rms_angle_over_sd"] =
+                o.calibration.n > 0 ? py::object(py::float_(o.calibration.rms_ratio)) : py::none();
+            return d;
+          },
+          "rigid-body markers: each target's angle between the commanded and the (un)corrected "
+          "orientation [rad], unc/cor (N,), their RMS over the corrected targets, and the RMS of "
+          "angle / predicted sd (dict); None without orientations")
       .def(
           "to_json",
           [](const EvaluateResult& r) { return with_keywords(io::evaluate_json(r).dump(2)); },

@@ -4,6 +4,8 @@
 // arrays and, averaged per visit, a vrreg.Measurements for register / evaluate.
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "vrreg/core/check.hpp"
@@ -95,13 +97,19 @@ void bind_simulation(py::module_& m) {
   m.def(
       "simulate",
       [](const std::string& testbed_name, std::optional<std::string> dataset,
-         const planning::PlanResult* plan, std::uint64_t seed) {
+         const planning::PlanResult* plan, std::uint64_t seed, double rigid_body_mm) {
         VRREG_THROW_UNLESS(dataset.has_value() != (plan != nullptr),
                            "simulate: give a dataset (ur5: A1, A2 or B; lwr4: grid) or plan=, "
                            "not both");
         const simulation::Testbed testbed = simulation::testbed_by_name(testbed_name);
         simulation::SimulationOptions options;
         options.seed = seed;
+        VRREG_THROW_UNLESS(std::isfinite(rigid_body_mm) && rigid_body_mm >= 0.0,
+                           "simulate: rigid_body_mm must be finite and >= 0");
+        if (rigid_body_mm > 0.0) {
+          options.errors = testbed.default_errors;
+          options.errors->tracker.rigid_body_radius_m = rigid_body_mm / 1000.0;
+        }
         std::vector<simulation::CommandedLocation> locations;
         if (plan) locations = commanded(*plan);
         std::optional<simulation::Dataset> which;
@@ -119,10 +127,12 @@ void bind_simulation(py::module_& m) {
         return s;
       },
       py::arg("testbed"), py::arg("dataset") = py::none(), py::kw_only(),
-      py::arg("plan") = py::none(), py::arg("seed") = 1,
+      py::arg("plan") = py::none(), py::arg("seed") = 1, py::arg("rigid_body_mm") = 0.0,
       "Simulates one of the paper's datasets on a test bed ('ur5': 'A1', 'A2', 'B'; 'lwr4': "
       "'grid'), or measures a Procedure 1 plan (plan=vrreg.plan(...)), with `seed` (same seed, "
-      "same numbers, as `vrreg simulate`). Positions in METRES.");
+      "same numbers, as `vrreg simulate`). Positions in METRES. rigid_body_mm > 0: a rigid body "
+      "of 4 spheres on that radius, so the measurements carry orientations "
+      "(docs/orientation.md); positions stay as without it.");
 }
 
 }  // namespace vrreg::python

@@ -60,6 +60,11 @@ class JointMethod final : public FittedMethod {
     return FitOutcome{fit_joint_model(subset, options), {}};
   }
 
+  [[nodiscard]] std::optional<Eigen::Vector3d> rotation_error_rad(
+      const Eigen::Ref<const Eigen::VectorXd>& joints_rad) const override {
+    return model_.predict_rotation_rad(joints_rad);
+  }
+
   void check_query(const MethodQuery& query) const override {
     const int n = static_cast<int>(model_.joint_degrees().size());
     VRREG_THROW_UNLESS(query.joints_rad.cols() == query.registered_robot_m.cols() &&

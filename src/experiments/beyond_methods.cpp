@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/rotation.hpp"
 #include "vrreg/experiments/beyond_paper.hpp"
 #include "vrreg/metrics/errors.hpp"
 #include "vrreg/metrics/uncertainty_calibration.hpp"
@@ -50,6 +51,16 @@ Eigen::VectorXd pick(const Eigen::VectorXd& v, const std::vector<std::size_t>& p
   return out;
 }
 
+// The positions whose orientation was corrected.
+std::vector<std::size_t> corrected_positions(const EvaluateResult& r,
+                                             const std::vector<std::size_t>& positions) {
+  std::vector<std::size_t> out;
+  for (const std::size_t k : positions) {
+    if (is_corrected(r.orientation->correction.status[k])) out.push_back(k);
+  }
+  return out;
+}
+
 BeyondRow row_of(const Outcome& o, const std::vector<std::size_t>& positions) {
   BeyondRow row;
   row.method = o.method;
@@ -73,7 +84,38 @@ BeyondRow row_of(const Outcome& o, const std::vector<std::size_t>& positions) {
     }
   }
   if (r.cross_validation) row.chosen = to_string(r.cross_validation->chosen);
+  if (r.orientation) {
+    const std::vector<std::size_t> ok = corrected_positions(r, positions);
+    const Eigen::VectorXd angle = pick(r.orientation->cor_error_rad, ok);
+    row.cor_rms_angle_rad = rms_of(angle);
+    const Eigen::VectorXd& sd = r.orientation->correction.predicted_sd_rad;
+    if (sd.size() == r.orientation->cor_error_rad.size()) {
+      const UncertaintyCalibration c = uncertainty_calibration(angle, pick(sd, ok));
+      if (c.n > 0) row.angle_calibration_rms_ratio = c.rms_ratio;
+    }
+  }
   return row;
+}
+
+// RMS over `rows` of the distance between a location as measured and its noise-free twin
+// (`squared` gives its square); `what` names the figure in errors.
+template <typename Squared>
+double twin_rms(const MeasurementSet& measured, const MeasurementSet& noise_free,
+                const std::vector<std::size_t>& rows, const char* what, Squared squared) {
+  VRREG_THROW_UNLESS(measured.locations.size() == noise_free.locations.size(),
+                     what << ": " << measured.locations.size() << " measured locations but "
+                          << noise_free.locations.size() << " noise-free ones");
+  if (rows.empty()) return 0.0;
+  double sum_sq = 0.0;
+  for (const std::size_t i : rows) {
+    const Location& a = measured.locations.at(i);
+    const Location& b = noise_free.locations.at(i);
+    VRREG_THROW_UNLESS(a.point == b.point && a.config == b.config,
+                       what << ": location " << i << " is '" << a.point << "' measured but '"
+                            << b.point << "' noise-free");
+    sum_sq += squared(a, b);
+  }
+  return std::sqrt(sum_sq / static_cast<double>(rows.size()));
 }
 
 }  // namespace
@@ -94,20 +136,22 @@ simulation::TestbedErrorModel without_noise(simulation::TestbedErrorModel errors
 
 double noise_floor_m(const MeasurementSet& measured, const MeasurementSet& noise_free,
                      const std::vector<std::size_t>& rows) {
-  VRREG_THROW_UNLESS(measured.locations.size() == noise_free.locations.size(),
-                     "noise floor: " << measured.locations.size() << " measured locations but "
-                                     << noise_free.locations.size() << " noise-free ones");
-  if (rows.empty()) return 0.0;
-  double sum_sq = 0.0;
-  for (const std::size_t i : rows) {
-    const Location& a = measured.locations.at(i);
-    const Location& b = noise_free.locations.at(i);
-    VRREG_THROW_UNLESS(a.point == b.point && a.config == b.config,
-                       "noise floor: location " << i << " is '" << a.point << "' measured but '"
-                                                << b.point << "' noise-free");
-    sum_sq += (a.sensor_m - b.sensor_m).squaredNorm();
-  }
-  return std::sqrt(sum_sq / static_cast<double>(rows.size()));
+  return twin_rms(
+      measured, noise_free, rows, "noise floor",
+      [](const Location& a, const Location& b) { return (a.sensor_m - b.sensor_m).squaredNorm(); });
+}
+
+double angle_noise_floor_rad(const MeasurementSet& measured, const MeasurementSet& noise_free,
+                             const std::vector<std::size_t>& rows) {
+  return twin_rms(measured, noise_free, rows, "angle noise floor",
+                  [](const Location& a, const Location& b) {
+                    VRREG_THROW_UNLESS(
+                        a.q_sensor_marker && b.q_sensor_marker,
+                        "angle noise floor: '" << a.point << "' has no orientation in both sets");
+                    return std::pow(rotation_angle_rad(a.q_sensor_marker->toRotationMatrix(),
+                                                       b.q_sensor_marker->toRotationMatrix()),
+                                    2);
+                  });
 }
 
 std::vector<BeyondTable> beyond_tables(const MeasurementSet& measured,
@@ -153,6 +197,13 @@ std::vector<BeyondTable> beyond_tables(const MeasurementSet& measured,
     for (const std::size_t k : g.positions) rows.push_back(target_rows.at(k));
     t.noise_floor_m = noise_floor_m(measured, noise_free, rows);
     for (const Outcome& o : outcomes) t.rows.push_back(row_of(o, g.positions));
+    // The uncorrected angle errors depend on the registration only, as the positions' do.
+    for (const Outcome& o : outcomes) {
+      if (!o.result || !o.result->orientation) continue;
+      t.unc_rms_angle_rad = rms_of(pick(o.result->orientation->unc_error_rad, g.positions));
+      t.angle_noise_floor_rad = angle_noise_floor_rad(measured, noise_free, rows);
+      break;
+    }
     out.push_back(std::move(t));
   }
   return out;

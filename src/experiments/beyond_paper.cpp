@@ -27,8 +27,11 @@ struct Twin {
 };
 
 Twin simulate_twin(const simulation::Testbed& testbed, Dataset dataset, std::uint64_t seed,
-                   const std::optional<simulation::TestbedErrorModel>& errors) {
-  const simulation::TestbedErrorModel e = errors.value_or(testbed.default_errors);
+                   const std::optional<simulation::TestbedErrorModel>& errors,
+                   double rigid_body_radius_m) {
+  simulation::TestbedErrorModel e = testbed.default_errors;
+  e.tracker.rigid_body_radius_m = rigid_body_radius_m;  // the positions' draws stay the same
+  if (errors) e = *errors;
   return {to_measurement_set(simulation::simulate_dataset(testbed, dataset, {seed, e})),
           to_measurement_set(simulation::simulate_dataset(testbed, dataset, {seed, without_noise(e)}))};
 }
@@ -99,7 +102,7 @@ void beyond_ur5(const BeyondOptions& o, const std::function<void()>& on_step,
                          {{key, what, all_positions(t.measured)}}, octuplet, o.methods);
   };
   const double a1_step_m = simulation::grid_spec(Dataset::kA1).step_m;
-  const Twin a1 = simulate_twin(ur5, Dataset::kA1, o.seed, o.ur5_errors);
+  const Twin a1 = simulate_twin(ur5, Dataset::kA1, o.seed, o.ur5_errors, o.rigid_body_radius_m);
   append(out, tables(a1, "A1", "A1: all fiducials, octuplet a = 50 mm", 2.0 * a1_step_m));
   // Fewer fiducials: the octuplet corners only (every second node, 50 mm apart); the targets
   // stay at the centres of those cubes, so the paper's octuplet still applies.
@@ -118,14 +121,14 @@ void beyond_ur5(const BeyondOptions& o, const std::function<void()>& on_step,
   append(out, tables(cube, "A1_cube27", "A1, 27 fiducials around p04_06_04", 2.0 * a1_step_m));
   beyond_step(on_step);
 
-  const Twin a2 = simulate_twin(ur5, Dataset::kA2, o.seed, o.ur5_errors);
+  const Twin a2 = simulate_twin(ur5, Dataset::kA2, o.seed, o.ur5_errors, 0.0);
   append(out, tables(a2, "A2", "A2: all fiducials, octuplet a = 25 mm",
                      2.0 * simulation::grid_spec(Dataset::kA2).step_m));
   beyond_step(on_step);
 
   // B: the paper's row is its best, the smallest octuplet (d_min), with its visiting-order rule
   // for corners measured twice.
-  const Twin b = simulate_twin(ur5, Dataset::kB, o.seed, o.ur5_errors);
+  const Twin b = simulate_twin(ur5, Dataset::kB, o.seed, o.ur5_errors, 0.0);
   const Twin b_once{first_readings(b.measured), first_readings(b.noise_free)};
   std::vector<BeyondTable> tb =
       tables(b_once, "B", "B: every cube corner once, octuplet a = 5 mm", {});
@@ -146,7 +149,8 @@ void beyond_ur5(const BeyondOptions& o, const std::function<void()>& on_step,
 void beyond_lwr4(const BeyondOptions& o, const std::function<void()>& on_step,
               std::vector<BeyondTable>& out) {
   const simulation::Testbed lwr4 = simulation::lwr4_testbed();
-  const Twin grid = simulate_twin(lwr4, Dataset::kGrid, o.seed, o.lwr4_errors);
+  const Twin grid =
+      simulate_twin(lwr4, Dataset::kGrid, o.seed, o.lwr4_errors, o.rigid_body_radius_m);
   const std::vector<std::size_t> targets = grid.measured.select(Role::kTarget);
   std::set<int> configs;
   for (const std::size_t i : targets) configs.insert(grid.measured.locations[i].config.value_or(0));

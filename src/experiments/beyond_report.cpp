@@ -13,6 +13,7 @@ namespace {
 
 using text::decimal_text;
 using units::kMillimetresPerMetre;
+constexpr double kMilliradiansPerRadian = 1e3;
 constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 
 // "strategy 2" -> "strategy_2": a JSON pointer segment.
@@ -83,12 +84,51 @@ void append_beyond_cells(const std::vector<BeyondTable>& tables, std::vector<Cel
       value(q + "calibration_rms_ratio", r.ok ? r.calibration_rms_ratio : kNoValue);
       value(q + "within_2sigma_percent", r.ok ? 100.0 * r.within_2sigma : kNoValue);
       count(q + "n_flagged", r.ok ? r.n_flagged : kNoValue);
-      if (r.method != to_string(InterpolationMethod::kAuto)) continue;
-      for (const InterpolationMethod m : auto_choices()) {
-        value(q + "chose_" + to_string(m), !r.ok ? kNoValue : r.chosen == to_string(m) ? 1.0 : 0.0);
+      if (r.method == to_string(InterpolationMethod::kAuto)) {
+        for (const InterpolationMethod m : auto_choices()) {
+          value(q + "chose_" + to_string(m), !r.ok                      ? kNoValue
+                                             : r.chosen == to_string(m) ? 1.0
+                                                                        : 0.0);
+        }
       }
+      if (std::isnan(t.unc_rms_angle_rad)) continue;  // positions only
+      const double angle = r.ok ? r.cor_rms_angle_rad : kNoValue;
+      value(q + "cor_rms_angle_mrad", kMilliradiansPerRadian * angle);
+      value(q + "angle_over_floor",
+            t.angle_noise_floor_rad > 0.0 ? angle / t.angle_noise_floor_rad : kNoValue);
+      value(q + "angle_calibration_rms_ratio", r.ok ? r.angle_calibration_rms_ratio : kNoValue);
     }
+    if (std::isnan(t.unc_rms_angle_rad)) continue;
+    value(p + "unc_rms_angle_mrad", kMilliradiansPerRadian * t.unc_rms_angle_rad);
+    value(p + "angle_noise_floor_mrad", kMilliradiansPerRadian * t.angle_noise_floor_rad);
   }
+}
+
+std::string format_beyond_orientation(const CellTable& cells,
+                                      const std::vector<BeyondTable>& first_seed) {
+  std::string out;
+  for (const BeyondTable& t : first_seed) {
+    const std::string p = prefix(t);
+    if (cells.find(p + "unc_rms_angle_mrad") == nullptr) continue;
+    out += "\n" + t.dataset + ": unc RMS angle " + shown(cells, p + "unc_rms_angle_mrad", 3) +
+           ", noise floor " + shown(cells, p + "angle_noise_floor_mrad", 3) + "\n";
+    text::TextTable table;
+    table.add({"method", "cor RMS angle", "x floor", "angle/sd"});
+    for (const BeyondRow& r : t.rows) {
+      const std::string q = p + method_key(r.method) + "/";
+      if (cells.find(q + "cor_rms_angle_mrad") == nullptr) continue;  // the paper's rows
+      table.add({r.method, shown(cells, q + "cor_rms_angle_mrad", 3),
+                 shown(cells, q + "angle_over_floor", 2),
+                 shown(cells, q + "angle_calibration_rms_ratio", 2)});
+    }
+    out += table.str();
+  }
+  if (out.empty()) return out;
+  return "Orientations beyond the paper (docs/orientation.md): the test beds' rigid-body marker,\n"
+         "each method's field interpolating the fiducials' rotation residuals; angles in mrad.\n"
+         "'x floor' = cor RMS angle / its noise floor (the targets' own orientation noise);\n"
+         "angle/sd = RMS of angle error / predicted sd.\n" +
+         out + "\n";
 }
 
 std::string format_beyond_tables(const CellTable& cells,
@@ -134,7 +174,7 @@ std::string format_beyond_tables(const CellTable& cells,
     out += table.str();
     if (!why.empty()) out += "  -:\n" + why;
   }
-  return out + "\n";
+  return out + "\n" + format_beyond_orientation(cells, first_seed);
 }
 
 std::string beyond_csv(const CellTable& cells, const std::vector<BeyondTable>& first_seed) {
@@ -148,6 +188,10 @@ std::string beyond_csv(const CellTable& cells, const std::vector<BeyondTable>& f
   std::string out = "dataset,method,n_seeds,n_fiducials,n_targets,unc_rms_t_mm,noise_floor_mm";
   for (const char* c : kColumns) out += std::string(",") + c + "," + c + "_sd";
   out += ",cor_rms_t_mm_median";
+  static const char* const kAngleColumns[] = {"cor_rms_angle_mrad", "angle_over_floor",
+                                              "angle_calibration_rms_ratio"};
+  out += ",unc_rms_angle_mrad,angle_noise_floor_mrad";
+  for (const char* c : kAngleColumns) out += std::string(",") + c + "," + c + "_sd";
   out += "\n";
   for (const BeyondTable& t : first_seed) {
     const std::string p = prefix(t);
@@ -164,6 +208,11 @@ std::string beyond_csv(const CellTable& cells, const std::vector<BeyondTable>& f
       const CellSummary* cor = cells.find(q + "cor_rms_t_mm");
       out += "," + (cor == nullptr || std::isnan(cor->median) ? std::string()
                                                                : format_general(cor->median, 10));
+      out += "," + num(cells.find(p + "unc_rms_angle_mrad"), false) + "," +
+             num(cells.find(p + "angle_noise_floor_mrad"), false);
+      for (const char* c : kAngleColumns) {
+        out += "," + num(cells.find(q + c), false) + "," + num(cells.find(q + c), true);
+      }
       out += "\n";
     }
   }

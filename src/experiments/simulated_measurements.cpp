@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/experiments/simulated_measurements.hpp"
 
+#include "vrreg/core/rotation.hpp"
+
 namespace vrreg::experiments {
 
 MeasurementSet to_measurement_set(const simulation::SimulatedDataset& data) {
@@ -25,12 +27,29 @@ MeasurementSet to_measurement_set(const simulation::SimulatedDataset& data) {
     set.n_joints = static_cast<int>(visit.q_rad.size());
   }
   // Welford's running mean and squared deviations, as the CSV reader does.
+  std::vector<Eigen::Matrix4d> orientation_sums;
   for (const simulation::SimulatedReading& r : data.readings) {
-    Location& loc = set.locations[static_cast<std::size_t>(r.visit)];
+    const auto v = static_cast<std::size_t>(r.visit);
+    Location& loc = set.locations[v];
     ++loc.n_readings;
     const Eigen::Vector3d delta = r.sensor_m - loc.sensor_m;
     loc.sensor_m += delta / loc.n_readings;
     loc.sensor_sq_dev_m2 += delta.cwiseProduct(r.sensor_m - loc.sensor_m);
+    if (r.q_sensor_marker) {
+      orientation_sums.resize(set.locations.size(), Eigen::Matrix4d::Zero());
+      if (!loc.q_sensor_marker) loc.q_sensor_marker = r.q_sensor_marker;
+      orientation_sums[v] += r.q_sensor_marker->coeffs() * r.q_sensor_marker->coeffs().transpose();
+      loc.q_robot_marker = Eigen::Quaterniond(data.visits[v].R_commanded);
+    }
+  }
+  // The mean orientation as the CSV reader takes it (the dominant eigenvector of sum q q').
+  for (std::size_t v = 0; v < orientation_sums.size(); ++v) {
+    Location& loc = set.locations[v];
+    if (!loc.q_sensor_marker) continue;
+    const QuaternionMean mean =
+        quaternion_mean(orientation_sums[v], loc.n_readings, *loc.q_sensor_marker);
+    loc.q_sensor_marker = mean.mean;
+    loc.orientation_sq_dev_rad2 = mean.sq_dev_rad2;
   }
   return set;
 }

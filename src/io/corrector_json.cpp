@@ -283,4 +283,60 @@ SavedCorrector read_corrector(const json& item, const std::string& path, const J
   return out;
 }
 
+nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrector& saved) {
+  nlohmann::ordered_json out;
+  out["method"] = to_string(saved.method);
+  nlohmann::ordered_json mean = nlohmann::ordered_json::array();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) mean.push_back(finite(saved.mean_residual(r, c), "mean residual"));
+  out["mean_residual"] = std::move(mean);
+  out["joint_rms_rad"] = finite(saved.joint_rms_rad, "joint rms");
+  if (saved.joint_terms.degree >= 0) {
+    const JointRotationTerms& t = saved.joint_terms;
+    const auto list = [](const Eigen::VectorXd& v) {
+      nlohmann::ordered_json a = nlohmann::ordered_json::array();
+      for (const double x : v) a.push_back(finite(x, "joint terms"));
+      return a;
+    };
+    out["joint_terms"] = {{"degree", t.degree},
+                          {"q_lo_rad", list(t.q_lo_rad)},
+                          {"q_hi_rad", list(t.q_hi_rad)},
+                          {"coefficients", list(t.coefficients)}};
+  }
+  if (saved.tangent) out["tangent"] = corrector_json(*saved.tangent);
+  return out;
+}
+
+SavedOrientationCorrector read_orientation_corrector(const json& item, const std::string& path,
+                                                     const JsonFields& f) {
+  f.require_object(item, path);
+  SavedOrientationCorrector out;
+  out.method = read_method(item, path, "method", f);
+  const std::vector<double> mean = f.numbers(item, path, "mean_residual", 9);  // row-major
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out.mean_residual(r, c) = mean[static_cast<std::size_t>(3 * r + c)];
+  out.joint_rms_rad = f.number(item, path, "joint_rms_rad");
+  if (out.joint_rms_rad < 0.0) f.fail(join_path(path, "joint_rms_rad"), "negative");
+  if (item.contains("joint_terms")) {
+    const std::string at = join_path(path, "joint_terms");
+    const json& t = item.at("joint_terms");
+    f.require_object(t, at);
+    const auto vector = [&](const char* key) {
+      const std::vector<double> v = f.numbers(t, at, key, -1);
+      return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(v.data(), std::ssize(v)));
+    };
+    out.joint_terms.degree = f.integer(t, at, "degree");
+    if (out.joint_terms.degree < 0) f.fail(join_path(at, "degree"), "negative");
+    out.joint_terms.q_lo_rad = vector("q_lo_rad");
+    out.joint_terms.q_hi_rad = vector("q_hi_rad");
+    out.joint_terms.coefficients = vector("coefficients");
+  }
+  if (item.contains("tangent")) {
+    out.tangent = read_corrector(item.at("tangent"), join_path(path, "tangent"), f);
+  } else if (out.method != InterpolationMethod::kJoint) {
+    f.fail(join_path(path, "tangent"), "missing (every method but joint has one)");
+  }
+  return out;
+}
+
 }  // namespace vrreg::io::detail

@@ -7,6 +7,7 @@
 
 #include "json_fields.hpp"
 #include "vrreg/correction/corrector.hpp"
+#include "vrreg/correction/orientation_field.hpp"
 
 namespace vrreg::io::detail {
 
@@ -19,5 +20,13 @@ nlohmann::ordered_json corrector_json(const SavedCorrector& saved);
 /// Reads what corrector_json writes at key path `path`; errors name the file and the key.
 SavedCorrector read_corrector(const nlohmann::json& item, const std::string& path,
                               const JsonFields& f);
+
+/// The "orientation_corrector" member (rigid-body markers): {"method", "mean_residual" (9
+/// numbers, row-major), "joint_rms_rad", "tangent" (as corrector_json; absent for joint)}.
+nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrector& saved);
+
+/// Reads what orientation_corrector_json writes at key path `path`.
+SavedOrientationCorrector read_orientation_corrector(const nlohmann::json& item,
+                                                     const std::string& path, const JsonFields& f);
 
 }  // namespace vrreg::io::detail

@@ -6,6 +6,7 @@
 
 #include "csv_fields.hpp"
 #include "text_checks.hpp"
+#include "vrreg/core/rotation.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
 
@@ -62,6 +63,15 @@ void LocationAccumulator::check_joints(const Location& location, const Measureme
                           std::to_string(location.source_line));
     }
   }
+  if (row.q_robot_marker && location.q_robot_marker) {
+    const double angle_rad = row.q_robot_marker->angularDistance(*location.q_robot_marker);
+    if (angle_rad > joint_tolerance_rad_) {
+      throw FileError(source_, line,
+                      location_name(key_, row.config) + " has a commanded orientation (robot_q) " +
+                          format_double(angle_rad) + " rad from the one on line " +
+                          std::to_string(location.source_line));
+    }
+  }
 }
 
 void LocationAccumulator::add(const MeasurementRow& row, std::size_t line) {
@@ -91,6 +101,7 @@ void LocationAccumulator::add(const MeasurementRow& row, std::size_t line) {
     location.has_robot = has_robot_;
     location.robot_m = row.robot_m;
     location.q_rad = row.q_rad;
+    location.q_robot_marker = row.q_robot_marker;
     location.source_line = line;
   } else {
     check_joints(locations_[index], row, line);
@@ -116,10 +127,10 @@ std::vector<Location> LocationAccumulator::take() {
   for (std::size_t i = 0; i < orientation_sums_.size() && i < locations_.size(); ++i) {
     Location& location = locations_[i];
     if (!location.q_sensor_marker || location.n_readings < 2) continue;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eig(orientation_sums_[i]);
-    Eigen::Vector4d mean = eig.eigenvectors().col(3);
-    if (mean.dot(location.q_sensor_marker->coeffs()) < 0.0) mean = -mean;
-    location.q_sensor_marker = Eigen::Quaterniond(mean(3), mean(0), mean(1), mean(2)).normalized();
+    const QuaternionMean mean =
+        quaternion_mean(orientation_sums_[i], location.n_readings, *location.q_sensor_marker);
+    location.q_sensor_marker = mean.mean;
+    location.orientation_sq_dev_rad2 = mean.sq_dev_rad2;
   }
   orientation_sums_.clear();
   return std::move(locations_);

@@ -31,6 +31,15 @@ void append_mm(std::string& out, const Eigen::Vector3d& p_m, std::size_t index) 
   }
 }
 
+void append_quaternion(std::string& out, const Eigen::Quaterniond& q, std::size_t index) {
+  VRREG_THROW_UNLESS(q.coeffs().allFinite() && std::abs(q.norm() - 1.0) <= 1e-9,
+                     "reading " << index << ": an orientation that is not a unit quaternion");
+  for (int k = 0; k < 4; ++k) {  // coeffs(): x, y, z, w
+    out += ',';
+    out += detail::format_double(q.coeffs()(k));
+  }
+}
+
 void append_comments(std::string& out, const std::vector<std::string>& comments) {
   for (const std::string& comment : comments) {
     std::size_t start = 0;
@@ -69,6 +78,13 @@ std::string format_measurement_csv(const std::vector<Reading>& readings,
     VRREG_THROW_UNLESS(r.visit.has_value() == first.visit.has_value(),
                        "reading " << i << ": visit given for some readings but not all");
     VRREG_THROW_UNLESS(!r.visit || *r.visit >= 0, "reading " << i << ": negative visit");
+    VRREG_THROW_UNLESS(r.q_sensor_marker.has_value() == first.q_sensor_marker.has_value(),
+                       "reading " << i << ": orientation given for some readings but not all");
+    VRREG_THROW_UNLESS(
+        r.q_robot_marker.has_value() == first.q_robot_marker.has_value(),
+        "reading " << i << ": commanded orientation given for some readings but not all");
+    VRREG_THROW_UNLESS(!r.q_robot_marker || r.q_sensor_marker,
+                       "reading " << i << ": a commanded orientation without a measured one");
     VRREG_THROW_UNLESS(r.q_rad.size() == n_joints, "reading " << i << " has " << r.q_rad.size()
                                                               << " joint angles, reading 0 has "
                                                               << n_joints);
@@ -82,6 +98,8 @@ std::string format_measurement_csv(const std::vector<Reading>& readings,
   for (std::size_t k = 0; k < n_joints; ++k) out += ",q" + std::to_string(k + 1) + "_rad";
   if (first.repeat) out += ",repeat";
   if (first.visit) out += ",visit";
+  if (first.q_sensor_marker) out += ",sensor_qx,sensor_qy,sensor_qz,sensor_qw";
+  if (first.q_robot_marker) out += ",robot_qx,robot_qy,robot_qz,robot_qw";
   out += '\n';
   for (std::size_t i = 0; i < readings.size(); ++i) {
     const Reading& r = readings[i];
@@ -98,6 +116,8 @@ std::string format_measurement_csv(const std::vector<Reading>& readings,
     }
     if (r.repeat) out += "," + std::to_string(*r.repeat);
     if (r.visit) out += "," + std::to_string(*r.visit);
+    if (r.q_sensor_marker) append_quaternion(out, *r.q_sensor_marker, i);
+    if (r.q_robot_marker) append_quaternion(out, *r.q_robot_marker, i);
     out += '\n';
   }
   return out;

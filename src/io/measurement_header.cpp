@@ -3,6 +3,7 @@
 
 #include <map>
 #include <optional>
+#include <string_view>
 
 #include "csv_fields.hpp"
 #include "text_checks.hpp"
@@ -15,15 +16,16 @@ constexpr int kMaxJoints = 64;
 constexpr const char* kAllowed =
     "allowed: point, role, robot_x_mm, robot_y_mm, robot_z_mm, sensor_x_mm, sensor_y_mm, "
     "sensor_z_mm (or all six with _m), config, q1_rad..qN_rad (or _deg), repeat, visit, sensor_qx, "
-    "sensor_qy, sensor_qz, sensor_qw";
+    "sensor_qy, sensor_qz, sensor_qw, robot_qx, robot_qy, robot_qz, robot_qw";
 
-// "sensor_qx".."sensor_qw": the marker's orientation quaternion (unitless); index x,y,z,w = 0..3.
-std::optional<int> orientation_column(const std::string& lower) {
-  static constexpr const char* kNames[] = {"sensor_qx", "sensor_qy", "sensor_qz", "sensor_qw"};
-  for (int k = 0; k < 4; ++k) {
-    if (lower == kNames[k]) return k;
-  }
-  return std::nullopt;
+// "<frame>_qx".."<frame>_qw" (frame "sensor" or "robot"): an orientation quaternion
+// (unitless); index x,y,z,w = 0..3.
+std::optional<int> orientation_column(const std::string& lower, const std::string& frame) {
+  if (lower.size() != frame.size() + 3 || !lower.starts_with(frame + "_q")) return std::nullopt;
+  static constexpr std::string_view kComponents = "xyzw";
+  const std::size_t k = kComponents.find(lower.back());
+  if (k == std::string_view::npos) return std::nullopt;
+  return static_cast<int>(k);
 }
 
 // Splits "<stem>_<suffix>" at the last underscore; the suffix is empty when there is none.
@@ -113,9 +115,14 @@ class HeaderParser {
                              : cols.repeat) = index;
         continue;
       }
-      if (const auto component = orientation_column(lower)) {
+      if (const auto component = orientation_column(lower, "sensor")) {
         claim(lower, index, cols);
         cols.orientation[static_cast<std::size_t>(*component)] = index;
+        continue;
+      }
+      if (const auto component = orientation_column(lower, "robot")) {
+        claim(lower, index, cols);
+        cols.robot_orientation[static_cast<std::size_t>(*component)] = index;
         continue;
       }
       const auto [stem, unit] = split_suffix(lower);
@@ -176,22 +183,32 @@ class HeaderParser {
       }
       if (cols.sensor[static_cast<std::size_t>(axis)] < 0) missing("sensor_" + suffix);
     }
-    int n_orientation = 0;
-    for (const int index : cols.orientation) n_orientation += index >= 0 ? 1 : 0;
-    if (n_orientation != 0 && n_orientation != 4) {
-      for (int k = 0; k < 4; ++k) {
-        if (cols.orientation[static_cast<std::size_t>(k)] < 0) {
-          fail(std::string("missing column 'sensor_q") + "xyzw"[k] +
-               "' (the marker orientation needs all of sensor_qx, sensor_qy, sensor_qz, "
-               "sensor_qw, or none)");
-        }
-      }
+    check_quaternion_columns(cols.orientation, "sensor", "the marker orientation");
+    check_quaternion_columns(cols.robot_orientation, "robot", "the commanded orientation");
+    if (cols.has_robot_orientation() && !cols.has_orientation()) {
+      fail(
+          "robot_qx..robot_qw without sensor_qx..sensor_qw (a commanded orientation needs the "
+          "measured one)");
     }
     for (std::size_t k = 0; k < cols.joints.size(); ++k) {
       if (cols.joints[k] == MeasurementColumns::kAbsent) {
         fail("joint columns must be q1..q" + std::to_string(cols.joints.size()) +
              " without gaps: " + "missing column 'q" + std::to_string(k + 1) + "_" + angle_unit +
              "'");
+      }
+    }
+  }
+
+  // All four components of a quaternion, or none.
+  void check_quaternion_columns(const std::array<int, 4>& columns, const std::string& frame,
+                                const std::string& what) const {
+    int n = 0;
+    for (const int index : columns) n += index >= 0 ? 1 : 0;
+    if (n == 0 || n == 4) return;
+    for (int k = 0; k < 4; ++k) {
+      if (columns[static_cast<std::size_t>(k)] < 0) {
+        fail("missing column '" + frame + "_q" + "xyzw"[k] + "' (" + what + " needs all of " +
+             frame + "_qx, " + frame + "_qy, " + frame + "_qz, " + frame + "_qw, or none)");
       }
     }
   }

@@ -22,10 +22,12 @@ struct MeasurementColumns {
   int visit = kAbsent;
   std::vector<int> joints;   ///< q1..qN
   std::array<int, 4> orientation{kAbsent, kAbsent, kAbsent, kAbsent};  ///< sensor_qx..qw
+  std::array<int, 4> robot_orientation{kAbsent, kAbsent, kAbsent, kAbsent};  ///< robot_qx..qw
   bool length_in_mm = true;  ///< _mm columns (else _m)
   bool joints_in_degrees = false;
   [[nodiscard]] bool has_robot() const { return robot[0] != kAbsent; }
   [[nodiscard]] bool has_orientation() const { return orientation[0] != kAbsent; }
+  [[nodiscard]] bool has_robot_orientation() const { return robot_orientation[0] != kAbsent; }
 };
 
 /// Parses header `fields` (line `line` of `source`); throws FileError on any problem.

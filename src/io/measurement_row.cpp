@@ -99,19 +99,26 @@ class RowParser {
       row.q_rad[k] = columns_.joints_in_degrees ? units::deg_to_rad(value) : value;
     }
     row.q_sensor_marker.reset();
-    if (columns_.has_orientation()) {
-      const auto& c = columns_.orientation;
-      const Eigen::Quaterniond q(number(c[3]), number(c[0]), number(c[1]), number(c[2]));
-      if (!(std::abs(q.norm() - 1.0) <= kQuaternionNormTolerance)) {
-        fail("sensor_qx..sensor_qw: the quaternion's norm is " + format_double(q.norm()) +
-             ", not 1 (within " + format_double(kQuaternionNormTolerance) +
-             "); give the marker orientation as a unit quaternion");
-      }
-      row.q_sensor_marker = q.normalized();
+    if (columns_.has_orientation())
+      row.q_sensor_marker = quaternion(columns_.orientation, "sensor");
+    row.q_robot_marker.reset();
+    if (columns_.has_robot_orientation()) {
+      row.q_robot_marker = quaternion(columns_.robot_orientation, "robot");
     }
   }
 
  private:
+  // The unit quaternion in columns x, y, z, w of `frame` ("sensor" or "robot").
+  Eigen::Quaterniond quaternion(const std::array<int, 4>& c, const std::string& frame) const {
+    const Eigen::Quaterniond q(number(c[3]), number(c[0]), number(c[1]), number(c[2]));
+    if (!(std::abs(q.norm() - 1.0) <= kQuaternionNormTolerance)) {
+      fail(frame + "_qx.." + frame + "_qw: the quaternion's norm is " + format_double(q.norm()) +
+           ", not 1 (within " + format_double(kQuaternionNormTolerance) +
+           "); give the orientation as a unit quaternion");
+    }
+    return q.normalized();
+  }
+
   const std::vector<std::string_view>& fields_;
   const MeasurementColumns& columns_;
   const std::string& source_;

@@ -24,6 +24,7 @@ struct MeasurementRow {
   std::optional<int> repeat;
   std::optional<int> visit;
   std::optional<Eigen::Quaterniond> q_sensor_marker;  ///< normalised, when the file has it
+  std::optional<Eigen::Quaterniond> q_robot_marker;   ///< commanded, normalised, when given
 };
 
 /// A quaternion read from a file is accepted when its norm is within this of 1, then normalised.

@@ -99,6 +99,28 @@ Location read_fiducial(const json& item, const std::string& path, const detail::
     loc.source_line = static_cast<std::size_t>(line);
   }
   if (item.contains("q_rad")) loc.q_rad = f.numbers(item, path, "q_rad", -1);
+  const auto quaternion = [&](const char* key) {
+    const std::vector<double> c = f.numbers(item, path, key, 4);  // x, y, z, w
+    const Eigen::Quaterniond q(c[3], c[0], c[1], c[2]);
+    if (!(std::abs(q.norm() - 1.0) <= 1e-6)) {
+      f.fail(detail::join_path(path, key),
+             "not a unit quaternion (norm " + std::to_string(q.norm()) + ")");
+    }
+    // What register wrote is unit to rounding: kept to the bit, so a model read back corrects
+    // exactly as the one written; anything further off is normalised.
+    return std::abs(q.norm() - 1.0) <= 1e-12 ? q : q.normalized();
+  };
+  if (item.contains("q_sensor_marker")) {
+    loc.q_sensor_marker = quaternion("q_sensor_marker");
+    loc.orientation_sq_dev_rad2 = f.number(item, path, "orientation_sq_dev_rad2");
+    if (loc.orientation_sq_dev_rad2 < 0.0)
+      f.fail(detail::join_path(path, "orientation_sq_dev_rad2"), "negative");
+  }
+  if (item.contains("q_robot_marker")) {
+    if (!loc.q_sensor_marker)
+      f.fail(detail::join_path(path, "q_robot_marker"), "given without q_sensor_marker");
+    loc.q_robot_marker = quaternion("q_robot_marker");
+  }
   correction_m = f.vector3(item, path, u.key("correction"), u.per_m);
   return loc;
 }
@@ -253,6 +275,17 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
       throw;
     } catch (const InputError& e) {
       f.fail("corrector", e.what());
+    }
+  }
+  if (doc.contains("orientation_corrector")) {
+    const SavedOrientationCorrector saved = detail::read_orientation_corrector(
+        doc.at("orientation_corrector"), "orientation_corrector", f);
+    try {
+      model.orientation_corrector = restore_orientation_corrector(model, saved);
+    } catch (const FileError&) {
+      throw;
+    } catch (const InputError& e) {
+      f.fail("orientation_corrector", e.what());
     }
   }
   return model;

@@ -47,6 +47,19 @@ ordered_json fiducial_json(const Location& f, const Eigen::Vector3d& correction_
     for (const double v : f.q_rad) q.push_back(finite(v, "fiducial q_rad"));
     out["q_rad"] = std::move(q);
   }
+  // Rigid-body markers only: a sphere's fiducials keep their keys (orientation_field.hpp).
+  const auto quaternion = [](const Eigen::Quaterniond& q, const char* what) {
+    ordered_json a = ordered_json::array();
+    for (int k = 0; k < 4; ++k) a.push_back(finite(q.coeffs()(k), what));  // x, y, z, w
+    return a;
+  };
+  if (f.q_sensor_marker) {
+    out["q_sensor_marker"] = quaternion(*f.q_sensor_marker, "fiducial q_sensor_marker");
+    out["orientation_sq_dev_rad2"] = finite(f.orientation_sq_dev_rad2, "fiducial orientation");
+  }
+  if (f.q_robot_marker) {
+    out["q_robot_marker"] = quaternion(*f.q_robot_marker, "fiducial q_robot_marker");
+  }
   out["correction_m"] = m_array(correction_m, "fiducial correction_m");
   return out;
 }
@@ -134,6 +147,10 @@ std::string format_model_json(const RegistrationModel& model) {
   out["fiducials"] = std::move(fiducials);
   detail::add_monitoring_json(model, out);
   if (model.corrector) out["corrector"] = detail::corrector_json(model.corrector->save());
+  if (model.orientation_corrector) {
+    out["orientation_corrector"] =
+        detail::orientation_corrector_json(model.orientation_corrector->save());
+  }
   try {
     return out.dump(2) + "\n";
   } catch (const ordered_json::type_error& e) {  // invalid UTF-8 in a label or the source name

@@ -189,6 +189,19 @@ nlohmann::json evaluate_json(const EvaluateResult& result) {
   j["unc_max_tre_mm"] = corrected_mm(s.unc_max_tre_m);
   j["cor_max_tre_mm"] = corrected_mm(s.cor_max_tre_m);
   add_predicted_sd_json(c, result.calibration, j);
+  if (result.orientation) {  // rigid-body markers only: a sphere's JSON stays as it was
+    const OrientationEvaluation& o = *result.orientation;
+    nlohmann::json angle;
+    angle["unc_rms_angle_mrad"] = 1e3 * o.unc_rms_rad;
+    angle["cor_rms_angle_mrad"] = 1e3 * o.cor_rms_rad;
+    angle["n_flagged"] = o.correction.n_flagged;
+    if (o.calibration.n > 0) {
+      angle["calibration"] = {{"n", o.calibration.n},
+                              {"rms_angle_over_sd", o.calibration.rms_ratio},
+                              {"within_2sd", o.calibration.within_2sigma}};
+    }
+    j["orientation"] = angle;
+  }
   if (result.cross_validation)
     j["cross_validation"] = cross_validation_json(*result.cross_validation);
   const int strategy = planning::strategy_number(result.strategy);

@@ -36,6 +36,11 @@ constexpr const char* kPerTargetHeader =
 std::string per_target_header(const EvaluateResult& r) {
   std::string header = kPerTargetHeader;
   if (r.correction.predicted_sd_m.size() > 0) header.insert(header.size() - 1, ",predicted_sd_mm");
+  if (r.orientation) {  // rigid-body markers: the angle errors [mrad]
+    std::string angles = ",unc_angle_mrad,cor_angle_mrad";
+    if (r.orientation->correction.predicted_sd_rad.size() > 0) angles += ",predicted_angle_sd_mrad";
+    header.insert(header.size() - 1, angles);
+  }
   return header;
 }
 
@@ -58,6 +63,16 @@ void put_per_target_row(std::string& out, const EvaluateResult& r, std::size_t k
   if (r.correction.predicted_sd_m.size() > 0) {
     out += ',';
     if (std::isfinite(r.correction.predicted_sd_m(n))) put_mm(out, r.correction.predicted_sd_m(n), kDigits);
+  }
+  if (r.orientation) {
+    const OrientationEvaluation& o = *r.orientation;
+    out += ',' + format_general(1e3 * o.unc_error_rad(n), kDigits);
+    out += ',' + format_general(1e3 * o.cor_error_rad(n), kDigits);
+    if (o.correction.predicted_sd_rad.size() > 0) {
+      out += ',';
+      if (std::isfinite(o.correction.predicted_sd_rad(n)))
+        out += format_general(1e3 * o.correction.predicted_sd_rad(n), kDigits);
+    }
   }
   out += '\n';
 }
@@ -96,6 +111,34 @@ void write_per_target_csv(const std::string& path, const EvaluateResult& result)
 
 namespace {
 
+// Rigid-body markers: the corrected orientation (what to command), robot frame, the applied
+// rotation and its predicted sd; absent for spheres (their files stay as they were).
+std::string orientation_header(const CorrectResult& r) {
+  if (!r.orientation) return "";
+  return std::string(
+             ",robot_qx,robot_qy,robot_qz,robot_qw,rotation_x_mrad,rotation_y_mrad,"
+             "rotation_z_mrad") +
+         (r.orientation->predicted_sd_rad.size() > 0 ? ",predicted_angle_sd_mrad" : "");
+}
+
+void put_orientation(std::string& out, const OrientationCorrection& o, std::size_t k, int digits) {
+  const Eigen::Quaterniond q(o.corrected_R_robot_marker[k]);
+  for (int i = 0; i < 4; ++i) {  // x, y, z, w
+    out += ',';
+    out += format_general(q.coeffs()(i), digits);
+  }
+  const auto n = static_cast<Eigen::Index>(k);
+  for (int i = 0; i < 3; ++i) {
+    out += ',';
+    out += format_general(1e3 * o.corrections_robot_rad(i, n), digits);
+  }
+  if (o.predicted_sd_rad.size() > 0) {
+    out += ',';
+    if (std::isfinite(o.predicted_sd_rad(n)))
+      out += format_general(1e3 * o.predicted_sd_rad(n), digits);
+  }
+}
+
 std::string corrected_header(const CorrectResult& r, const std::string& model_name,
                              const std::string& points_name) {
   const TargetCorrection& c = r.correction;
@@ -105,7 +148,8 @@ std::string corrected_header(const CorrectResult& r, const std::string& model_na
          "point,config,status,robot_x_mm,robot_y_mm,robot_z_mm,"
          "uncorrected_robot_x_mm,uncorrected_robot_y_mm,uncorrected_robot_z_mm,"
          "correction_x_mm,correction_y_mm,correction_z_mm" +
-         (c.predicted_sd_m.size() > 0 ? std::string(",predicted_sd_mm\n") : std::string("\n"));
+         (c.predicted_sd_m.size() > 0 ? std::string(",predicted_sd_mm") : std::string()) +
+         orientation_header(r) + "\n";
 }
 
 void put_corrected_row(std::string& out, const CorrectResult& r, std::size_t k) {
@@ -124,6 +168,7 @@ void put_corrected_row(std::string& out, const CorrectResult& r, std::size_t k) 
     out += ',';
     if (std::isfinite(c.predicted_sd_m(n))) put_mm(out, c.predicted_sd_m(n), kDigits);
   }
+  if (r.orientation) put_orientation(out, *r.orientation, k, kDigits);
   out += '\n';
 }
 

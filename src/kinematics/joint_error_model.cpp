@@ -7,6 +7,8 @@
 
 #include "joint_error_solve.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/rotation.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
 
 namespace vrreg::kinematics {
 
@@ -49,6 +51,14 @@ JointErrorModel JointErrorModel::fit(const SerialChain& nominal,
 Eigen::Vector3d JointErrorModel::predict_m(const JointRef& q_rad) const {
   state_->nominal.check_joints(q_rad, "joint error model prediction");
   return predict_joint_error_m(*state_, perturbed_chain(*state_, state_->x), q_rad);
+}
+
+Eigen::Vector3d JointErrorModel::predict_rotation_rad(const JointRef& q_rad) const {
+  state_->nominal.check_joints(q_rad, "joint error model prediction");
+  const SerialChain chain_x = perturbed_chain(*state_, state_->x);
+  const JointVector q_actual = q_rad + joint_error_rad(*state_, state_->x, q_rad);
+  return rotation_log(forward_kinematics(chain_x, q_actual).linear() *
+                      forward_kinematics(state_->nominal, q_rad).linear().transpose());
 }
 
 Points3 JointErrorModel::predict_m(const std::vector<JointVector>& q_rad) const {

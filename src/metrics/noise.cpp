@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/metrics/noise.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "vrreg/core/check.hpp"
@@ -13,6 +14,26 @@ std::optional<double> sigma_opt_m(const std::vector<Location>& locations) {
   for (const Location& loc : locations) {
     if (loc.n_readings < 2) continue;
     sum_var += loc.sensor_sq_dev_m2.sum() / (3.0 * (loc.n_readings - 1));
+    ++used;
+  }
+  if (used == 0) return std::nullopt;
+  return std::sqrt(sum_var / used);
+}
+
+int median_readings(const std::vector<Location>& locations) {
+  if (locations.empty()) return 1;
+  std::vector<int> readings;
+  for (const Location& l : locations) readings.push_back(std::max(l.n_readings, 1));
+  std::nth_element(readings.begin(), readings.begin() + readings.size() / 2, readings.end());
+  return readings[readings.size() / 2];
+}
+
+std::optional<double> sigma_opt_rad(const std::vector<Location>& locations) {
+  double sum_var = 0.0;
+  int used = 0;
+  for (const Location& loc : locations) {
+    if (loc.n_readings < 2 || !loc.q_sensor_marker) continue;
+    sum_var += loc.orientation_sq_dev_rad2 / (3.0 * (loc.n_readings - 1));
     ++used;
   }
   if (used == 0) return std::nullopt;

@@ -41,8 +41,8 @@ CorrectResult correct_set(const RegistrationModel& model, const MeasurementSet& 
   const pipeline_detail::CorrectorRequest request{out.interpolation, strategy, norm, options.robot,
                                                   options.refit, options.exact,
                                                   options.extrapolate};
-  out.correction =
-      pipeline_detail::correct_rows(model, *set, rows, request, nominal, &out.cross_validation);
+  out.correction = pipeline_detail::correct_rows(model, *set, rows, request, nominal,
+                                                 &out.cross_validation, &out.orientation);
   pipeline_detail::labels_of(*set, rows, out.names, out.configs);
   return out;
 }

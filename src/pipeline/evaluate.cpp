@@ -6,6 +6,7 @@
 #include "procedure2_steps.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/rotation.hpp"
 #include "vrreg/metrics/errors.hpp"
 
 namespace vrreg {
@@ -35,6 +36,35 @@ Strategy strategy_to_use(const RegistrationModel& model, const EvaluateOptions& 
   return s;
 }
 
+// The angle errors of the corrected orientations against the commanded ones.
+std::optional<OrientationEvaluation> orientation_errors(std::optional<OrientationCorrection> c,
+                                                        const MeasurementSet& set,
+                                                        const std::vector<std::size_t>& rows) {
+  if (!c) return std::nullopt;
+  for (const std::size_t r : rows) {
+    if (!set.locations[r].q_robot_marker) return std::nullopt;  // nothing to compare with
+  }
+  OrientationEvaluation out;
+  const auto n = static_cast<Eigen::Index>(rows.size());
+  out.unc_error_rad.resize(n);
+  out.cor_error_rad.resize(n);
+  std::vector<Eigen::Index> corrected;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const Eigen::Matrix3d R_commanded = set.locations[rows[i]].q_robot_marker->toRotationMatrix();
+    out.unc_error_rad(k) = rotation_angle_rad(c->uncorrected_R_robot_marker[i], R_commanded);
+    out.cor_error_rad(k) = rotation_angle_rad(c->corrected_R_robot_marker[i], R_commanded);
+    if (is_corrected(c->status[i])) corrected.push_back(k);
+  }
+  if (!corrected.empty()) {
+    out.unc_rms_rad = root_mean_square(out.unc_error_rad(corrected));
+    out.cor_rms_rad = root_mean_square(out.cor_error_rad(corrected));
+  }
+  out.calibration = uncertainty_calibration(out.cor_error_rad, c->predicted_sd_rad);
+  out.correction = std::move(*c);
+  return out;
+}
+
 EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet& file_set,
                             const EvaluateOptions& options) {
   model.validate();
@@ -55,8 +85,10 @@ EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet
   const pipeline_detail::CorrectorRequest request{out.interpolation, out.strategy, norm,
                                                   options.robot, options.refit,
                                                   options.exact, options.extrapolate};
+  std::optional<OrientationCorrection> orientation;
   out.correction = pipeline_detail::correct_rows(model, *set, rows, request, out.targets_robot_m,
-                                                 &out.cross_validation);
+                                                 &out.cross_validation, &orientation);
+  out.orientation = orientation_errors(std::move(orientation), *set, rows);
   // Flagged targets keep their uncorrected mapping: that is what `correct` would hand the robot.
   out.unc_tre_m = point_errors(out.correction.uncorrected_robot_m, out.targets_robot_m);  // Eq. 3
   out.cor_tre_m = point_errors(out.correction.corrected_robot_m, out.targets_robot_m);

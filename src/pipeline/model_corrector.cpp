@@ -56,12 +56,8 @@ CorrectorData corrector_data(const RegistrationModel& model,
   // (simulated A1: 0.141 mm and sd 1.3x too wide with the 0.1 mm spec; 0.127 mm, calibrated,
   // without it).
   const std::optional<double> opt = sigma_opt_m(model.fiducials);
-  if (opt) {
-    std::vector<int> readings;
-    for (const Location& f : model.fiducials) readings.push_back(std::max(f.n_readings, 1));
-    std::nth_element(readings.begin(), readings.begin() + readings.size() / 2, readings.end());
-    data.noise_sd_m = *opt / std::sqrt(static_cast<double>(readings[readings.size() / 2]));
-  }
+  if (opt)
+    data.noise_sd_m = *opt / std::sqrt(static_cast<double>(median_readings(model.fiducials)));
   return data;
 }
 

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "orientation_rows.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
@@ -41,8 +42,13 @@ void prepare_points(const RegistrationModel& model, const MeasurementSet& file_s
   out.set = &file_set;
   if (model.T_registered_sensor) {  // the sensor moved since registration: back to its frame
     out.registered = file_set;
-    for (Location& l : out.registered.locations)
+    for (Location& l : out.registered.locations) {
       l.sensor_m = model.T_registered_sensor->apply(l.sensor_m);
+      if (l.q_sensor_marker) {
+        l.q_sensor_marker =
+            Eigen::Quaterniond(model.T_registered_sensor->rotation) * *l.q_sensor_marker;
+      }
+    }
     out.set = &out.registered;
   }
   if (model.marker_offset) {
@@ -125,9 +131,10 @@ TargetCorrection uncorrected(const RegistrationModel& model, const MeasurementSe
 }  // namespace
 
 TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
-                              const std::vector<std::size_t>& rows,
-                              const CorrectorRequest& request, const Points3& nominal_robot_m,
-                              std::optional<CrossValidation>* cross_validation) {
+                              const std::vector<std::size_t>& rows, const CorrectorRequest& request,
+                              const Points3& nominal_robot_m,
+                              std::optional<CrossValidation>* cross_validation,
+                              std::optional<OrientationCorrection>* orientation) {
   const InterpolationSettings& settings = request.settings;
   if (request.strategy == planning::Strategy::kVolumeCorners) {
     require_configurations(set, planning::Strategy::kVolumeCorners);
@@ -158,7 +165,11 @@ TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementS
     const Points3 sensor_m = set.sensor_points(rows);  // the query is a view: kept alive here
     CorrectionQuery query(sensor_m, nominal_robot_m, joints, lines);
     query.extrapolate = request.extrapolate;
-    return corrector.correct(query);
+    TargetCorrection positions = corrector.correct(query);
+    if (orientation != nullptr) {
+      *orientation = correct_orientation_rows(model, set, rows, corrector, query, request.robot);
+    }
+    return positions;
   };
   // The field models and Strategy 3 need more of the targets' file (joints, configurations):
   // their errors name it.

@@ -9,8 +9,9 @@
 
 #include "model_corrector.hpp"
 #include "vrreg/core/measurement.hpp"
-#include "vrreg/correction/cross_validation.hpp"
 #include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/correction/cross_validation.hpp"
+#include "vrreg/correction/orientation_field.hpp"
 #include "vrreg/pipeline/model.hpp"
 #include "vrreg/planning/strategy2_labels.hpp"
 #include "vrreg/registration/rigid.hpp"
@@ -60,10 +61,13 @@ void prepare_points(const RegistrationModel& model, const MeasurementSet& file_s
 /// now (model_corrector.hpp): Strategy 3's nearest-configuration octuplets, the paper's stencils
 /// with the rows' file lines as their visiting order, or a field model (docs/field-models.md).
 /// nominal_robot_m: the rows' nominal robot positions [m], or 0 columns where the method does not
-/// need them. `cross_validation` receives auto's table when auto was asked.
+/// need them. `cross_validation` receives auto's table when auto was asked; `orientation` the
+/// rows' corrected orientations when the model's fiducials and the rows carry them
+/// (orientation_rows.hpp), else nullopt.
 TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementSet& set,
-                              const std::vector<std::size_t>& rows,
-                              const CorrectorRequest& request, const Points3& nominal_robot_m,
-                              std::optional<CrossValidation>* cross_validation = nullptr);
+                              const std::vector<std::size_t>& rows, const CorrectorRequest& request,
+                              const Points3& nominal_robot_m,
+                              std::optional<CrossValidation>* cross_validation = nullptr,
+                              std::optional<OrientationCorrection>* orientation = nullptr);
 
 }  // namespace vrreg::pipeline_detail

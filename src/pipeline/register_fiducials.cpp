@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "model_corrector.hpp"
+#include "orientation_rows.hpp"
 #include "procedure2_steps.hpp"
 #include "robust_rows.hpp"
 #include "set_rows.hpp"
@@ -110,6 +111,10 @@ RegisterResult register_unchecked(const MeasurementSet& input, const RegisterOpt
           pipeline_detail::corrector_data(out.model, out.model.robot),
           pipeline_detail::corrector_options(options.interpolation, strategy,
                                              options.procedure2.joint_norm));
+      if (pipeline_detail::has_fiducial_orientations(out.model)) {  // rigid-body markers
+        out.model.orientation_corrector =
+            pipeline_detail::fit_orientation(out.model, *out.model.corrector, out.model.robot);
+      }
     } catch (const FileError&) {
       throw;
     } catch (const InputError& e) {

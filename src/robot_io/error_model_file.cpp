@@ -147,9 +147,10 @@ void read_robot(const ErrorModelReader& reader, const json& root, std::size_t n_
 }
 
 void read_tracker(const ErrorModelReader& reader, const json& root, simulation::TrackerModel& t) {
-  const json* tracker = reader.object(
-      root, "", "tracker",
-      {"distance_m", "azimuth_deg", "elevation_deg", "noise_sigma_mm", "readings_per_location"});
+  const json* tracker =
+      reader.object(root, "", "tracker",
+                    {"distance_m", "azimuth_deg", "elevation_deg", "noise_sigma_mm",
+                     "readings_per_location", "rigid_body_radius_mm", "rigid_body_markers"});
   if (tracker == nullptr) return;
   reader.number(*tracker, "tracker", "distance_m", 1.0, t.distance_m);
   reader.number(*tracker, "tracker", "azimuth_deg", deg_to_rad(1.0), t.azimuth_rad);
@@ -159,6 +160,8 @@ void read_tracker(const ErrorModelReader& reader, const json& root, simulation::
   if (sigma.size() != 3) reader.fail("tracker.noise_sigma_mm", "expected 3 numbers (x, y, z)");
   t.noise_sigma_m = Eigen::Vector3d(sigma[0], sigma[1], sigma[2]);
   reader.integer(*tracker, "tracker", "readings_per_location", t.readings_per_location);
+  reader.number(*tracker, "tracker", "rigid_body_radius_mm", mm_to_m(1.0), t.rigid_body_radius_m);
+  reader.integer(*tracker, "tracker", "rigid_body_markers", t.rigid_body_markers);
 }
 
 }  // namespace
@@ -188,6 +191,10 @@ std::string format_error_model(const simulation::TestbedErrorModel& model,
                                human(m_to_mm(t.noise_sigma_m.y())),
                                human(m_to_mm(t.noise_sigma_m.z()))};
   tracker["readings_per_location"] = t.readings_per_location;
+  if (t.rigid_body_radius_m > 0.0) {  // a sphere's files stay as they were
+    tracker["rigid_body_radius_mm"] = human(m_to_mm(t.rigid_body_radius_m));
+    tracker["rigid_body_markers"] = t.rigid_body_markers;
+  }
   nlohmann::ordered_json root;
   root["format"] = kFormat;
   root["testbed"] = testbed_name;

@@ -48,6 +48,13 @@ void describe_errors(const simulation::TestbedErrorModel& errors, std::vector<st
                 g(m_to_mm(t.noise_sigma_m.x())) + ", " + g(m_to_mm(t.noise_sigma_m.y())) + ", " +
                 g(m_to_mm(t.noise_sigma_m.z())) +
                 "] mm; K = " + std::to_string(t.readings_per_location) + " readings per visit");
+  if (t.rigid_body_radius_m > 0.0) {
+    const Eigen::Vector3d sigma_rad = simulation::orientation_noise_sigma_rad(t);
+    out.push_back("rigid body: " + std::to_string(t.rigid_body_markers) + " spheres on a " +
+                  g(m_to_mm(t.rigid_body_radius_m)) + " mm radius; orientation noise sigma per " +
+                  "reading (body x, y, z) [" + g(1e3 * sigma_rad.x()) + ", " +
+                  g(1e3 * sigma_rad.y()) + ", " + g(1e3 * sigma_rad.z()) + "] mrad");
+  }
 }
 
 void describe_robot(const simulation::SimulatedDataset& data, std::vector<std::string>& out) {
@@ -91,6 +98,10 @@ std::vector<Reading> simulated_readings(const simulation::SimulatedDataset& data
     row.q_rad.assign(visit.q_rad.data(), visit.q_rad.data() + visit.q_rad.size());
     row.repeat = r.repeat;
     if (with_visit) row.visit = std::max(visit.round, 0);
+    if (r.q_sensor_marker) {
+      row.q_sensor_marker = r.q_sensor_marker;
+      row.q_robot_marker = Eigen::Quaterniond(visit.R_commanded).normalized();
+    }
     rows.push_back(std::move(row));
   }
   return rows;

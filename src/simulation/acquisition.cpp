@@ -6,6 +6,7 @@
 
 #include "acquisition_detail.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/lwr_ik.hpp"
 #include "vrreg/kinematics/ur_ik.hpp"
 #include "vrreg/simulation/aik_order.hpp"
@@ -18,6 +19,8 @@ namespace {
 constexpr std::uint64_t kRobotStream = 0;
 constexpr std::uint64_t kVisitStream = 100;
 constexpr std::uint64_t kReadingStream = 200;
+// Its own stream: a rigid body leaves every position draw as it was.
+constexpr std::uint64_t kOrientationStream = 300;
 
 Eigen::Isometry3d tcp_pose(const Testbed& testbed, const Eigen::Vector3d& position_m) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
@@ -122,16 +125,27 @@ void acquire_visits(const Testbed& testbed, SimulatedDataset& data) {
   const std::uint64_t at = data.time_s == 0.0 ? 0 : std::bit_cast<std::uint64_t>(data.time_s);
   Random visit_rng = Random::stream(data.seed ^ at, kVisitStream + dataset_index);
   Random reading_rng = Random::stream(data.seed ^ at, kReadingStream + dataset_index);
+  Random orientation_rng = Random::stream(data.seed ^ at, kOrientationStream + dataset_index);
   const TrackerModel& tracker = data.errors.tracker;
+  const bool rigid_body = tracker.rigid_body_radius_m > 0.0;
+  const Eigen::Vector3d orientation_sigma_rad = orientation_noise_sigma_rad(tracker);
   const int k = tracker.readings_per_location;
   data.readings.reserve(data.visits.size() * static_cast<std::size_t>(k));
   for (std::size_t v = 0; v < data.visits.size(); ++v) {
     SimulatedVisit& visit = data.visits[v];
     visit.tcp_m = robot.visit_tcp_m(visit.q_rad, visit_rng);
+    if (rigid_body) {
+      visit.R_commanded = kinematics::forward_kinematics(robot.nominal(), visit.q_rad).linear();
+      visit.R_true = robot.actual_rotation(visit.q_rad);
+    }
     for (int r = 0; r < k; ++r) {
       data.readings.push_back(
           {static_cast<int>(v), r,
            tracker_reading(T_sensor_robot, tracker.noise_sigma_m, visit.tcp_m, reading_rng)});
+      if (rigid_body) {
+        data.readings.back().q_sensor_marker = tracker_orientation_reading(
+            T_sensor_robot, orientation_sigma_rad, visit.R_true, orientation_rng);
+      }
     }
   }
 }

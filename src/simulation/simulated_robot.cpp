@@ -66,6 +66,10 @@ Eigen::Vector3d SimulatedRobot::actual_tcp_m(const kinematics::JointRef& q_cmd_r
   return kinematics::forward_kinematics(actual_, actual_joints(q_cmd_rad)).translation();
 }
 
+Eigen::Matrix3d SimulatedRobot::actual_rotation(const kinematics::JointRef& q_cmd_rad) const {
+  return kinematics::forward_kinematics(actual_, actual_joints(q_cmd_rad)).linear();
+}
+
 Eigen::Vector3d SimulatedRobot::visit_tcp_m(const kinematics::JointRef& q_cmd_rad,
                                             Random& rng) const {
   return actual_tcp_m(q_cmd_rad) + rng.normal3(model_.repeatability_sigma_m);

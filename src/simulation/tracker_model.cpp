@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/rotation.hpp"
 
 namespace vrreg::simulation {
 
@@ -21,6 +22,32 @@ void TrackerModel::validate() const {
   VRREG_THROW_UNLESS(
       readings_per_location >= 1,
       "tracker model: readings per location must be >= 1 (got " << readings_per_location << ")");
+  VRREG_THROW_UNLESS(std::isfinite(rigid_body_radius_m) && rigid_body_radius_m >= 0.0,
+                     "tracker model: the rigid body's radius must be finite and >= 0 (got "
+                         << rigid_body_radius_m << " m)");
+  VRREG_THROW_UNLESS(
+      rigid_body_radius_m == 0.0 || rigid_body_markers >= 3,
+      "tracker model: a rigid body needs at least 3 spheres (got " << rigid_body_markers << ")");
+}
+
+Eigen::Vector3d orientation_noise_sigma_rad(const TrackerModel& model) {
+  if (model.rigid_body_radius_m == 0.0) return Eigen::Vector3d::Zero();
+  const double sigma_m = std::sqrt(model.noise_sigma_m.squaredNorm() / 3.0);
+  const double n = model.rigid_body_markers;
+  const double r = model.rigid_body_radius_m;
+  const double in_plane = sigma_m / (r * std::sqrt(0.5 * n));
+  return {in_plane, in_plane, sigma_m / (r * std::sqrt(n))};
+}
+
+Eigen::Quaterniond tracker_orientation_reading(const RigidTransform& T_sensor_robot,
+                                               const Eigen::Vector3d& sigma_rad,
+                                               const Eigen::Matrix3d& R_robot_marker, Random& rng) {
+  const double nx = rng.normal(sigma_rad.x());  // in this order: reproducible draws
+  const double ny = rng.normal(sigma_rad.y());
+  const double nz = rng.normal(sigma_rad.z());
+  const Eigen::Matrix3d R_sensor_marker =
+      T_sensor_robot.rotation * R_robot_marker * rotation_exp(Eigen::Vector3d(nx, ny, nz));
+  return Eigen::Quaterniond(R_sensor_marker).normalized();
 }
 
 RigidTransform tracker_pose(const TrackerModel& model,

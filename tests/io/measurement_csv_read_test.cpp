@@ -262,6 +262,40 @@ TEST(ReadCsv, MarkerOrientationAverageOfManyRepeats) {
   ASSERT_TRUE(a.q_sensor_marker);
   // The mean of 200 readings of 1 mrad per axis: within ~4 x 1e-3 / sqrt(200) of the truth.
   EXPECT_LT(a.q_sensor_marker->angularDistance(truth), 3e-4);
+  // Their spread: 200 x 3 axes x (1 mrad)^2, give or take sqrt(2 / 600) = 6 % (one sd).
+  EXPECT_NEAR(a.orientation_sq_dev_rad2 / (200 * 3 * 1e-6), 1.0, 0.2);
+}
+
+TEST(ReadCsv, CommandedOrientationColumns) {
+  const std::string header =
+      "point,role,robot_x_mm,robot_y_mm,robot_z_mm,sensor_x_mm,sensor_y_mm,sensor_z_mm,repeat,"
+      "sensor_qx,sensor_qy,sensor_qz,sensor_qw,robot_qx,robot_qy,robot_qz,robot_qw\n";
+  const std::string text = header + "A,fiducial,1,2,3,4,5,6,0,0,0,0,1,0,0.6,0,0.8\n" +
+                           "A,fiducial,1,2,3,4,5,6,1,0,0,0,1,0,0.6,0,0.8\n";
+  const MeasurementSet set = parse(text);
+  ASSERT_TRUE(set.locations[0].q_robot_marker.has_value());
+  EXPECT_EQ(set.locations[0].q_robot_marker->coeffs(), Eigen::Vector4d(0, 0.6, 0, 0.8));
+  EXPECT_EQ(set.locations[0].orientation_sq_dev_rad2, 0.0);
+  // Repeats must agree on the commanded orientation; it needs the measured one; all four.
+  const auto error_of = [](const std::string& t) {
+    try {
+      parse(t);
+    } catch (const FileError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error_of(header + "A,fiducial,1,2,3,4,5,6,0,0,0,0,1,0,0.6,0,0.8\n" +
+                     "A,fiducial,1,2,3,4,5,6,1,0,0,0,1,0.6,0,0,0.8\n")
+                .find("test.csv:3: point 'A' has a commanded orientation (robot_q)"),
+            std::string::npos);
+  EXPECT_NE(
+      error_of(kHeader.substr(0, kHeader.size() - 1) + ",robot_qx,robot_qy,robot_qz,robot_qw\n")
+          .find("robot_qx..robot_qw without sensor_qx..sensor_qw"),
+      std::string::npos);
+  EXPECT_NE(error_of(header + "A,fiducial,1,2,3,4,5,6,0,0,0,0,1,0,0.6,0,0.9\n")
+                .find("robot_qx..robot_qw: the quaternion's norm is"),
+            std::string::npos);
 }
 
 }  // namespace

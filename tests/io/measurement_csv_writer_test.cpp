@@ -158,5 +158,36 @@ TEST(WriteCsv, WritesFileThatReadsBack) {
   EXPECT_EQ(set.locations.size(), 6u);
 }
 
+TEST(WriteCsv, OrientationsRoundTripToTheBit) {
+  Random rng(9);
+  std::vector<Reading> readings(4);
+  for (std::size_t p = 0; p < readings.size(); ++p) {
+    readings[p].point = "P" + std::to_string(p);
+    readings[p].sensor_m = rng.normal3(1.0);
+    readings[p].q_sensor_marker = Eigen::Quaterniond(rng.rotation());
+    readings[p].q_robot_marker = Eigen::Quaterniond(rng.rotation());
+  }
+  const std::string text = format_measurement_csv(readings);
+  EXPECT_NE(
+      text.find(",sensor_qx,sensor_qy,sensor_qz,sensor_qw,robot_qx,robot_qy,robot_qz,robot_qw\n"),
+      std::string::npos);
+  const MeasurementSet set = parse_round_trip(text);
+  for (std::size_t p = 0; p < readings.size(); ++p) {
+    // One reading each: read as written (the shortest text that reads back exactly).
+    EXPECT_LT(
+        (set.locations[p].q_sensor_marker->coeffs() - readings[p].q_sensor_marker->coeffs()).norm(),
+        4e-16);
+    EXPECT_LT(
+        (set.locations[p].q_robot_marker->coeffs() - readings[p].q_robot_marker->coeffs()).norm(),
+        4e-16);
+  }
+  // All readings or none; a commanded orientation needs the measured one.
+  readings[1].q_robot_marker.reset();
+  EXPECT_THROW(format_measurement_csv(readings), InputError);
+  for (Reading& r : readings) r.q_sensor_marker.reset();
+  readings[1].q_robot_marker = Eigen::Quaterniond::Identity();
+  EXPECT_THROW(format_measurement_csv(readings), InputError);
+}
+
 }  // namespace
 }  // namespace vrreg::io

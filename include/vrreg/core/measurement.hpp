@@ -37,6 +37,13 @@ struct Location {
   /// The marker's orientation in the sensor frame (rigid-body trackers), averaged over the
   /// repeat readings; empty when the file has no sensor_qx..qw columns.
   std::optional<Eigen::Quaterniond> q_sensor_marker{};
+  /// Sum over the repeat readings of the squared angle between each reading's orientation and
+  /// their mean [rad^2] (the spread of q_sensor_marker; 0 with one reading or none).
+  double orientation_sq_dev_rad2 = 0.0;
+  /// The commanded orientation of the same marker frame in the robot frame (robot_qx..qw), or
+  /// empty: with q_sensor_marker it gives the fiducial's rotation residual (correction/
+  /// orientation_field.hpp).
+  std::optional<Eigen::Quaterniond> q_robot_marker{};
   double weight = 1.0;            ///< registration weight (Eq. 2); files give every location 1
   std::size_t source_line = 0;    ///< first line of the file this location came from (1-based)
 };

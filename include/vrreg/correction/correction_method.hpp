@@ -100,6 +100,13 @@ class FittedMethod {
       Points3& /*registered_robot_m*/, Eigen::MatrixXd& /*joints_rad*/) const {
     return std::nullopt;
   }
+  /// The arm's orientation error at commanded joints `joints_rad`, rotation vector of the actual
+  /// against the nominal orientation, robot frame [rad], for methods that model the arm (the
+  /// joint-space model); nullopt for methods that interpolate residuals.
+  [[nodiscard]] virtual std::optional<Eigen::Vector3d> rotation_error_rad(
+      const Eigen::Ref<const Eigen::VectorXd>& /*joints_rad*/) const {
+    return std::nullopt;
+  }
   /// What restore() needs besides the fiducials: fitted parameters, factorisations' inputs.
   [[nodiscard]] virtual MethodState save() const = 0;
   /// The same method on a subset of the fiducials (a cross-validation fold). Methods whose

@@ -118,6 +118,12 @@ class Corrector {
   [[nodiscard]] SdSource sd_source() const;
   /// `auto`'s cross-validation table (when it chose the method).
   [[nodiscard]] const std::optional<CrossValidation>& cross_validation() const;
+  /// The arm's orientation error at commanded joints (FittedMethod::rotation_error_rad): the
+  /// joint-space model's, nullopt for every other method.
+  [[nodiscard]] std::optional<Eigen::Vector3d> rotation_error_rad(
+      const Eigen::Ref<const Eigen::VectorXd>& joints_rad) const;
+  /// True when `other` is this corrector or a copy of it (one fit, shared).
+  [[nodiscard]] bool shares_fit_with(const Corrector& other) const { return impl_ == other.impl_; }
   /// The registration the corrector maps with (Eq. 2).
   [[nodiscard]] const SimilarityTransform& T_robot_sensor() const;
 

@@ -20,6 +20,12 @@ void append_beyond_cells(const std::vector<BeyondTable>& tables, std::vector<Cel
 /// and, for rows without numbers, why (e.g. "kriging interpolation is not built yet").
 std::string format_beyond_tables(const CellTable& cells, const std::vector<BeyondTable>& first_seed);
 
+/// The orientation tables of the datasets with a rigid-body marker (per dataset: unc RMS angle,
+/// its noise floor; per method: cor RMS angle, over the floor, angle / predicted sd) [mrad];
+/// empty when none has orientations. Part of format_beyond_tables.
+std::string format_beyond_orientation(const CellTable& cells,
+                                      const std::vector<BeyondTable>& first_seed);
+
 /// beyond.csv: one line per dataset and method, mean and sd over seeds (mm, percent).
 std::string beyond_csv(const CellTable& cells, const std::vector<BeyondTable>& first_seed);
 

@@ -3,7 +3,8 @@
 // Writes individual readings (not averaged) as a measurement CSV (design.md 6) in millimetres and
 // radians, with numbers in the shortest text that reads back exactly; read_measurement_csv reads
 // it back. Columns: point, role, robot_{x,y,z}_mm (unless no reading has a robot position),
-// sensor_{x,y,z}_mm, then config, q1_rad..qN_rad, repeat when the readings carry them.
+// sensor_{x,y,z}_mm, then config, q1_rad..qN_rad, repeat, visit, sensor_qx..qw, robot_qx..qw
+// when the readings carry them.
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,10 @@ struct Reading {
   std::vector<double> q_rad{};  ///< joint angles [rad] (same count in every reading)
   std::optional<int> repeat{};  ///< repeat index >= 0 (all readings or none)
   std::optional<int> visit{};   ///< visit index >= 0 (all readings or none)
+  /// The marker's measured orientation, sensor frame (sensor_qx..qw; all readings or none).
+  std::optional<Eigen::Quaterniond> q_sensor_marker{};
+  /// The marker's commanded orientation, robot frame (robot_qx..qw; all readings or none).
+  std::optional<Eigen::Quaterniond> q_robot_marker{};
 };
 
 /// The CSV text: `comments` as `# ` lines first, then the header and one row per reading.

@@ -16,7 +16,9 @@ void write_per_target_csv(const std::string& path, const EvaluateResult& result)
 
 /// A comment naming the model, the points and the interpolation, then point,config,status,
 /// robot_{x,y,z}_mm (what to command), uncorrected_robot_{x,y,z}_mm, correction_{x,y,z}_mm
-/// (12 significant digits).
+/// (12 significant digits), predicted_sd_mm for field models; with orientations (rigid-body
+/// markers) robot_qx..qw (the corrected orientation to command, robot frame),
+/// rotation_{x,y,z}_mrad (the applied rotation) and predicted_angle_sd_mrad.
 std::string format_corrected_csv(const CorrectResult& result, const std::string& model_name,
                                  const std::string& points_name);
 void write_corrected_csv(const std::string& path, const CorrectResult& result,

@@ -106,6 +106,11 @@ class JointErrorModel {
   /// joint's fitted range its angle-error function keeps its value at the nearer end (a
   /// polynomial would run away); the DH, marker and trend terms hold everywhere.
   [[nodiscard]] Eigen::Vector3d predict_m(const JointRef& q_rad) const;
+  /// The arm's orientation error the model predicts at commanded joints `q_rad`: the rotation
+  /// vector of R_actual(q + dq(q)) R_nominal(q)^T, robot frame [rad] (the DH and joint-function
+  /// terms; the marker and trend terms move positions only). First order and exact agree to the
+  /// square of the error.
+  [[nodiscard]] Eigen::Vector3d predict_rotation_rad(const JointRef& q_rad) const;
   /// predict_m for each joint vector, one column each.
   [[nodiscard]] Points3 predict_m(const std::vector<JointVector>& q_rad) const;
 

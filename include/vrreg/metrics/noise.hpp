@@ -13,6 +13,15 @@ namespace vrreg {
 /// Empty when no location has repeats.
 std::optional<double> sigma_opt_m(const std::vector<Location>& locations);
 
+/// The median number of readings averaged into a location (at least 1 each); 1 when empty. The
+/// noise of one averaged reading is sigma_opt over its square root.
+int median_readings(const std::vector<Location>& locations);
+
+/// The orientation's sigma_opt: sqrt of the average, over locations with a measured orientation
+/// and >= 2 readings, of the per-axis sample variance of the readings' angles about their mean
+/// (Location::orientation_sq_dev_rad2 over 3 (n - 1)) [rad]. Empty when none has repeats.
+std::optional<double> sigma_opt_rad(const std::vector<Location>& locations);
+
 /// sigma_noise = sqrt(sigma_opt^2 + sigma_rep^2) (Eq. 9) [m].
 double sigma_noise_m(double sigma_opt_m, double sigma_rep_m);
 

@@ -8,6 +8,7 @@
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/correction/orientation_field.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
 #include "vrreg/pipeline/field_model.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
@@ -42,6 +43,10 @@ struct CorrectResult {
   std::vector<std::optional<int>> configs{};  ///< configuration labels; empty when none were given
   /// Field models: the cross-validation table when `auto` chose the method.
   std::optional<CrossValidation> cross_validation{};
+  /// The points' corrected orientations (corrected_R_robot_marker: what to command), when the
+  /// model's fiducials carry measured and commanded orientations and every point a measured one
+  /// (a measurement set's sensor_q columns; docs/orientation.md).
+  std::optional<OrientationCorrection> orientation{};
 };
 
 /// Corrects the target rows of a measurement set (robot columns needed by octuplet and Strategy 3

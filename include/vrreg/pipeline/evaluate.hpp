@@ -10,10 +10,11 @@
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/correction/orientation_field.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
 #include "vrreg/metrics/improvement.hpp"
 #include "vrreg/metrics/uncertainty_calibration.hpp"
-#include "vrreg/kinematics/serial_chain.hpp"
 #include "vrreg/pipeline/field_model.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
 #include "vrreg/pipeline/model.hpp"
@@ -45,6 +46,17 @@ struct EvaluateOptions {
   bool extrapolate = false;
 };
 
+/// The targets' orientations (rigid-body markers, docs/orientation.md): each error is the angle
+/// between the commanded orientation and the registered (un)corrected one [rad].
+struct OrientationEvaluation {
+  OrientationCorrection correction{};  ///< corrected and uncorrected orientations, robot frame
+  Eigen::VectorXd unc_error_rad{};     ///< per target
+  Eigen::VectorXd cor_error_rad{};     ///< per target; flagged targets keep the uncorrected one
+  double unc_rms_rad = 0.0;  ///< RMS over the corrected targets (as the positions' summary)
+  double cor_rms_rad = 0.0;  ///< RMS over the corrected targets
+  UncertaintyCalibration calibration{};  ///< cor_error_rad against correction.predicted_sd_rad
+};
+
 /// The evaluated targets, in the order given.
 struct EvaluateResult {
   planning::Strategy strategy = planning::Strategy::kNone;  ///< as used
@@ -69,6 +81,8 @@ struct EvaluateResult {
   std::optional<CrossValidation> cross_validation{};
   /// Field models: cor TRE against correction.predicted_sd_m (n = 0 for the paper's stencils).
   UncertaintyCalibration calibration{};
+  /// When the model's fiducials and the targets carry measured and commanded orientations.
+  std::optional<OrientationEvaluation> orientation{};
 
   /// Every target evaluated, corrected or not.
   [[nodiscard]] int n_targets() const { return static_cast<int>(unc_tre_m.size()); }

@@ -12,6 +12,7 @@
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/correction/corrector.hpp"
 #include "vrreg/correction/interpolation.hpp"
+#include "vrreg/correction/orientation_field.hpp"
 #include "vrreg/metrics/rigid_body_sampled.hpp"
 #include "vrreg/pipeline/marker_offset_model.hpp"
 #include "vrreg/planning/procedure2.hpp"
@@ -55,6 +56,10 @@ struct RegistrationModel {
   /// correct use it without fitting again; empty when none was fitted (the default linear
   /// interpolation could not be used on these fiducials, or the model was built by hand).
   std::optional<Corrector> corrector{};
+  /// With rigid-body markers (every fiducial has measured and commanded orientations): the
+  /// orientation field fitted with `corrector` (correction/orientation_field.hpp), used by
+  /// evaluate and correct whenever they use `corrector` itself.
+  std::optional<OrientationCorrector> orientation_corrector{};
   /// Monitor points read when the model was registered, one Location per visit (sensor frame of
   /// the registration): today's readings of them are compared with these (pipeline/check.hpp).
   std::vector<Location> monitors{};
@@ -74,5 +79,11 @@ struct RegistrationModel {
 /// The corrector `saved` describes, restored on the model's fiducials without fitting (what io
 /// does when it reads a model file). Throws InputError when the state does not fit the model.
 Corrector restore_corrector(const RegistrationModel& model, const SavedCorrector& saved);
+
+/// The orientation field `saved` describes, restored on the model's fiducials and its corrector
+/// without fitting. Throws InputError when the model has no corrector or fiducial orientations,
+/// or the state does not fit them.
+OrientationCorrector restore_orientation_corrector(const RegistrationModel& model,
+                                                   const SavedOrientationCorrector& saved);
 
 }  // namespace vrreg

@@ -46,6 +46,10 @@ struct SimulatedVisit {
   kinematics::JointVector q_rad{};  ///< commanded joints, as the controller reports them [rad]
   Eigen::Vector3d tcp_m = Eigen::Vector3d::Zero();  ///< true TCP position of the visit [m, base]
   int round = -1;  ///< monitor locations: which of their visits this is; -1 for the others
+  /// The marker's commanded orientation (the nominal model at the commanded joints) and its true
+  /// one (the actual model at the actual joints), base frame; set with a rigid-body tracker.
+  Eigen::Matrix3d R_commanded = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d R_true = Eigen::Matrix3d::Identity();
 };
 
 /// One tracker reading of a visit.
@@ -53,6 +57,8 @@ struct SimulatedReading {
   int visit = 0;                                       ///< index into SimulatedDataset::visits
   int repeat = 0;                                      ///< 0..K-1
   Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();  ///< measured position, sensor frame [m]
+  /// Measured orientation, sensor frame: with a rigid-body tracker (rigid_body_radius_m > 0).
+  std::optional<Eigen::Quaterniond> q_sensor_marker{};
 };
 
 /// A simulated dataset: locations, visits and readings in visiting order, plus the truth.

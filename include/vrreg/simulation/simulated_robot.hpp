@@ -29,6 +29,9 @@ class SimulatedRobot {
   [[nodiscard]] kinematics::JointVector actual_joints(const kinematics::JointRef& q_cmd_rad) const;
   /// Where the TCP really is for commanded joints, without repeatability [m, base frame].
   [[nodiscard]] Eigen::Vector3d actual_tcp_m(const kinematics::JointRef& q_cmd_rad) const;
+  /// The TCP's true orientation for commanded joints, base frame (repeatability moves the TCP
+  /// by a translation only).
+  [[nodiscard]] Eigen::Matrix3d actual_rotation(const kinematics::JointRef& q_cmd_rad) const;
   /// One visit: actual_tcp_m plus a repeatability draw (Gaussian per base axis) [m].
   [[nodiscard]] Eigen::Vector3d visit_tcp_m(const kinematics::JointRef& q_cmd_rad,
                                             Random& rng) const;

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// RRBC for orientations (beyond the paper; docs/orientation.md): a tracked rigid body gives each
+// fiducial an orientation besides its position. Positions are registered as before (Eq. 2); each
+// fiducial also gets a rotation residual, the rotation D_j = R_cmd_j (R R_sensor_marker_j)^T that
+// takes its registered measured orientation to the commanded one (the analogue of Eq. 6). The
+// residuals are interpolated as the positions' corrections are (Eq. 7), on the tangent space of
+// SO(3) at their mean M: v_j = log(D_j M^T), D(T) = exp(v(T)) M; a target's corrected orientation
+// is D(T) R R_sensor_marker_T (the analogue of Eq. 8). The joint-space model predicts the arm's
+// orientation error from the joints instead.
+#include <Eigen/Core>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "vrreg/core/types.hpp"
+#include "vrreg/correction/corrector.hpp"
+#include "vrreg/correction/corrector_data.hpp"
+#include "vrreg/correction/rrbc.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
+
+namespace vrreg {
+
+/// The fiducials' rotation residuals (the orientation analogue of Eq. 6), robot frame [rad]:
+/// log(R_robot_marker_j (R_robot_sensor R_sensor_marker_j)^T), one column each, with
+/// R_robot_marker_j the commanded orientation and R_sensor_marker_j the measured one. Throws
+/// InputError when the counts differ.
+Points3 rotation_residuals_rad(const Eigen::Matrix3d& R_robot_sensor,
+                               std::span<const Eigen::Matrix3d> R_sensor_marker,
+                               std::span<const Eigen::Matrix3d> R_robot_marker);
+
+/// Corrected orientations of n targets; every per-target member has n entries.
+struct OrientationCorrection {
+  InterpolationMethod method_used = InterpolationMethod::kLinear;
+  std::vector<StencilStatus> status{};  ///< as the positions' stencils: kOk or why not corrected
+  std::vector<Eigen::Matrix3d> uncorrected_R_robot_marker{};  ///< R R_sensor_marker
+  /// D(T) R R_sensor_marker where corrected, the uncorrected orientation where not.
+  std::vector<Eigen::Matrix3d> corrected_R_robot_marker{};
+  Points3 corrections_robot_rad{};  ///< log D(T), robot frame [rad]; 0 where not corrected
+  /// The predicted standard uncertainty of each corrected orientation's angle error [rad]
+  /// (NaN where not corrected); empty for the paper's stencils.
+  Eigen::VectorXd predicted_sd_rad{};
+  int n_flagged = 0;  ///< targets not corrected
+};
+
+/// The joint model's orientation-only terms: joint-angle errors that positions do not show
+/// (e.g. the last joint's offset with the marker near its axis), fitted on what the position
+/// model leaves of the fiducials' orientations: g(q) = sum_i z_i(q) dq_i(q_i), z_i the axis of
+/// revolute joint i and dq_i a Legendre series of `degree` over the joint's fitted range
+/// [q_lo, q_hi]; degree -1: none.
+struct JointRotationTerms {
+  int degree = -1;
+  Eigen::VectorXd q_lo_rad{};
+  Eigen::VectorXd q_hi_rad{};
+  Eigen::VectorXd coefficients{};  ///< joint-major, n_joints x (degree + 1) [rad]
+};
+
+/// An orientation field's saved form: what restore() needs besides the fiducials, their rotation
+/// residuals and the positions' corrector.
+struct SavedOrientationCorrector {
+  InterpolationMethod method = InterpolationMethod::kLinear;
+  Eigen::Matrix3d mean_residual = Eigen::Matrix3d::Identity();  ///< M
+  double joint_rms_rad = 0.0;               ///< the joint model's predicted sd [rad]
+  JointRotationTerms joint_terms{};         ///< the joint model's orientation-only terms
+  std::optional<SavedCorrector> tangent{};  ///< every method but the joint model
+};
+
+/// An orientation field fitted on one registration's fiducials: immutable, thread-safe, cheap to
+/// copy, like the positions' Corrector.
+class OrientationCorrector {
+ public:
+  /// Fits the orientation field with the method `positions` was fitted with (auto: its choice)
+  /// on the fiducials of `data` with rotation residuals `residuals_robot_rad` (3 x J). The joint
+  /// model predicts the orientation error from the joints (`positions` itself, the terms only
+  /// orientations show, and the mean of what they leave: the registration's rotation error);
+  /// every other method interpolates the residuals on the tangent space at their mean.
+  /// `noise_sd_rad`: the noise of one fiducial's averaged orientation per axis, when known. Throws
+  /// InputError when the method cannot be used.
+  static OrientationCorrector fit(const Corrector& positions, const CorrectorData& data,
+                                  const ConstPoints3Ref& residuals_robot_rad,
+                                  std::optional<double> noise_sd_rad = std::nullopt);
+
+  /// The field `saved` describes, on the fiducials, residuals and positions' corrector it was
+  /// fitted with, without fitting: it corrects with the same bits. Throws InputError when the
+  /// saved state does not fit them.
+  static OrientationCorrector restore(const SavedOrientationCorrector& saved,
+                                      const Corrector& positions, const CorrectorData& data,
+                                      const ConstPoints3Ref& residuals_robot_rad,
+                                      std::optional<double> noise_sd_rad = std::nullopt);
+  [[nodiscard]] SavedOrientationCorrector save() const;
+
+  /// Corrects the orientations `R_sensor_marker` (one per point of `query`, measured) of the
+  /// points of `query` (as for the positions' Corrector::correct). Throws InputError on a count
+  /// mismatch or what the method needs and the query lacks.
+  [[nodiscard]] OrientationCorrection correct(
+      const CorrectionQuery& query, std::span<const Eigen::Matrix3d> R_sensor_marker) const;
+
+  [[nodiscard]] InterpolationMethod method() const { return method_; }
+  /// What was fitted, e.g. "kriging ..., about the mean rotation 0.41 mrad".
+  [[nodiscard]] std::string describe() const;
+  /// The mean rotation residual M (joint model: of what the model leaves).
+  [[nodiscard]] const Eigen::Matrix3d& mean_residual() const { return mean_; }
+  /// True when correct() fills predicted_sd_rad.
+  [[nodiscard]] bool predicts_sd() const;
+  /// The registration the residuals were computed with (Eq. 2).
+  [[nodiscard]] const SimilarityTransform& T_robot_sensor() const { return T_robot_sensor_; }
+
+ private:
+  OrientationCorrector() = default;
+  InterpolationMethod method_ = InterpolationMethod::kLinear;
+  SimilarityTransform T_robot_sensor_{};
+  Eigen::Matrix3d mean_ = Eigen::Matrix3d::Identity();
+  /// Every method but the joint model: fitted on the tangent residuals v_j.
+  std::optional<Corrector> tangent_{};
+  /// The joint model: the positions' corrector (its rotation prediction e(q)), the terms g(q)
+  /// only orientations show, on the arm `joint_chain_`, and the RMS angle of what they leave at
+  /// the fiducials [rad], its predicted sd: D(q) = exp(-(e(q) + g(q))) M.
+  std::optional<Corrector> joint_{};
+  JointRotationTerms joint_terms_{};
+  std::optional<kinematics::SerialChain> joint_chain_{};
+  double joint_rms_rad_ = 0.0;
+};
+
+}  // namespace vrreg

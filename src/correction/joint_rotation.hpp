@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Internal to correction: what the joint-space model fitted on positions leaves of the fiducials'
+// orientation errors, as joint-angle errors seen by orientations only (e.g. the last joint's
+// offset when the marker sits near its axis): g(q) = sum_i z_i(q) dq_i(q_i), z_i the axis of
+// revolute joint i in the base frame and dq_i a Legendre series over the joint's fitted range,
+// one degree for every joint chosen by K-fold cross-validation (first order in dq).
+#include <Eigen/Core>
+#include <cstdint>
+
+#include "vrreg/core/types.hpp"
+#include "vrreg/correction/orientation_field.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
+
+namespace vrreg::detail {
+
+/// g(q) [rad, robot frame] of `terms` on `chain` (the nominal arm to the marker).
+Eigen::Vector3d joint_rotation_rad(const JointRotationTerms& terms,
+                                   const kinematics::SerialChain& chain,
+                                   const Eigen::Ref<const Eigen::VectorXd>& q_rad);
+
+/// Throws InputError when the terms' sizes do not fit `n_joints`.
+void validate_joint_rotation(const JointRotationTerms& terms, int n_joints);
+
+/// Fits g to `g_robot_rad` (3 x J) at joints `joints_rad` (n x J), choosing the degree among
+/// -1 (none), 0, 1, 2, 4, 6, 8 by `folds`-fold cross-validation (seeded shuffle).
+JointRotationTerms fit_joint_rotation(const kinematics::SerialChain& chain,
+                                      const Eigen::MatrixXd& joints_rad, const Points3& g_robot_rad,
+                                      int folds = 5, std::uint64_t seed = 1);
+
+}  // namespace vrreg::detail

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "orientation_rows.hpp"
+
+#include <cmath>
+
+#include "model_corrector.hpp"
+#include "vrreg/core/check.hpp"
+#include "vrreg/metrics/noise.hpp"
+
+namespace vrreg::pipeline_detail {
+
+bool has_fiducial_orientations(const RegistrationModel& model) {
+  return !model.fiducials.empty() &&
+         std::all_of(model.fiducials.begin(), model.fiducials.end(), [](const Location& f) {
+           return f.q_sensor_marker.has_value() && f.q_robot_marker.has_value();
+         });
+}
+
+OrientationInputs orientation_inputs(const RegistrationModel& model) {
+  std::vector<Eigen::Matrix3d> measured, commanded;
+  for (const Location& f : model.fiducials) {
+    measured.push_back(f.q_sensor_marker.value().toRotationMatrix());
+    commanded.push_back(f.q_robot_marker.value().toRotationMatrix());
+  }
+  OrientationInputs out{rotation_residuals_rad(model.T_robot_sensor.rotation, measured, commanded),
+                        sigma_opt_rad(model.fiducials)};
+  // The noise of one fiducial's averaged orientation per axis: sigma_opt over sqrt(readings).
+  if (out.noise_sd_rad) *out.noise_sd_rad /= std::sqrt(median_readings(model.fiducials));
+  return out;
+}
+
+OrientationCorrector fit_orientation(const RegistrationModel& model, const Corrector& positions,
+                                     const std::optional<kinematics::SerialChain>& robot) {
+  const OrientationInputs in = orientation_inputs(model);
+  return OrientationCorrector::fit(positions, corrector_data(model, robot ? robot : model.robot),
+                                   in.residuals_rad, in.noise_sd_rad);
+}
+
+std::optional<OrientationCorrection> correct_orientation_rows(
+    const RegistrationModel& model, const MeasurementSet& set, const std::vector<std::size_t>& rows,
+    const Corrector& positions, const CorrectionQuery& query,
+    const std::optional<kinematics::SerialChain>& robot) {
+  if (!has_fiducial_orientations(model)) return std::nullopt;
+  std::vector<Eigen::Matrix3d> R_sensor_marker;
+  for (const std::size_t r : rows) {
+    const Location& l = set.locations.at(r);
+    if (!l.q_sensor_marker) return std::nullopt;
+    R_sensor_marker.push_back(l.q_sensor_marker->toRotationMatrix());
+  }
+  if (model.orientation_corrector && model.corrector &&
+      positions.shares_fit_with(*model.corrector)) {
+    return model.orientation_corrector->correct(query, R_sensor_marker);
+  }
+  return fit_orientation(model, positions, robot).correct(query, R_sensor_marker);
+}
+
+}  // namespace vrreg::pipeline_detail
+
+namespace vrreg {
+
+OrientationCorrector restore_orientation_corrector(const RegistrationModel& model,
+                                                   const SavedOrientationCorrector& saved) {
+  VRREG_THROW_UNLESS(model.corrector, "an orientation field needs the model's corrector");
+  VRREG_THROW_UNLESS(pipeline_detail::has_fiducial_orientations(model),
+                     "an orientation field needs every fiducial's measured and commanded "
+                     "orientation");
+  const pipeline_detail::OrientationInputs in = pipeline_detail::orientation_inputs(model);
+  return OrientationCorrector::restore(saved, *model.corrector,
+                                       pipeline_detail::corrector_data(model, model.robot),
+                                       in.residuals_rad, in.noise_sd_rad);
+}
+
+}  // namespace vrreg

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+// Internal to pipeline: the orientations of the rows evaluate and correct hand to the corrector,
+// corrected by an orientation field fitted with the positions' method (correction/
+// orientation_field.hpp), when the model's fiducials carry measured and commanded orientations.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "vrreg/core/measurement.hpp"
+#include "vrreg/correction/corrector.hpp"
+#include "vrreg/correction/orientation_field.hpp"
+#include "vrreg/kinematics/serial_chain.hpp"
+#include "vrreg/pipeline/model.hpp"
+
+namespace vrreg::pipeline_detail {
+
+/// Whether every fiducial of `model` has a measured and a commanded orientation.
+bool has_fiducial_orientations(const RegistrationModel& model);
+
+/// The model's fiducials' rotation residuals (robot frame [rad]) and the noise of one averaged
+/// orientation per axis [rad] when the fiducials have repeat readings. Requires
+/// has_fiducial_orientations(model).
+struct OrientationInputs {
+  Points3 residuals_rad;
+  std::optional<double> noise_sd_rad;
+};
+OrientationInputs orientation_inputs(const RegistrationModel& model);
+
+/// The orientation field of the model's fiducials fitted with `positions` (its method, its joint
+/// model); `robot` as for the positions' corrector data.
+OrientationCorrector fit_orientation(const RegistrationModel& model, const Corrector& positions,
+                                     const std::optional<kinematics::SerialChain>& robot);
+
+/// The `rows` of `set` (the points of `query`, corrected for their positions by `positions`)
+/// with their orientations corrected; nullopt unless the model's fiducials carry measured and
+/// commanded orientations and every row a measured one. `robot`: as for the positions. The
+/// model's own orientation field when `positions` is the model's corrector, else one fitted now.
+std::optional<OrientationCorrection> correct_orientation_rows(
+    const RegistrationModel& model, const MeasurementSet& set, const std::vector<std::size_t>& rows,
+    const Corrector& positions, const CorrectionQuery& query,
+    const std::optional<kinematics::SerialChain>& robot);
+
+}  // namespace vrreg::pipeline_detail
