@@ -133,7 +133,7 @@ TEST(OrientationField, CountsAndValuesAreChecked) {
   EXPECT_THROW(OrientationCorrector::fit(positions, c.data, bad), InputError);
   const OrientationCorrector field = OrientationCorrector::fit(positions, c.data, residuals);
   const Points3 one = Points3::Constant(3, 1, 0.02);
-  EXPECT_THROW(field.correct(CorrectionQuery(one), std::vector<Eigen::Matrix3d>{}), InputError);
+  EXPECT_THROW((void)field.correct(CorrectionQuery(one), std::vector<Eigen::Matrix3d>{}), InputError);
 }
 
 }  // namespace
