@@ -184,7 +184,8 @@ std::string OrientationCorrector::describe() const {
 }
 
 OrientationCorrection OrientationCorrector::correct(
-    const CorrectionQuery& query, std::span<const Eigen::Matrix3d> R_sensor_marker) const {
+    const CorrectionQuery& query, std::span<const Eigen::Matrix3d> R_sensor_marker,
+    const TargetCorrection* positions_answer) const {
   const auto n = query.sensor_m.cols();
   VRREG_THROW_UNLESS(std::ssize(R_sensor_marker) == n,
                      "orientation correction: " << R_sensor_marker.size() << " orientations for "
@@ -199,7 +200,12 @@ OrientationCorrection OrientationCorrector::correct(
   }
   out.corrected_R_robot_marker = out.uncorrected_R_robot_marker;
   // The positions' answer says where a correction holds (support, stencils): the same points.
-  const TargetCorrection where = joint_ ? joint_->correct(query) : tangent_->correct(query);
+  std::optional<TargetCorrection> own;
+  if (!joint_ || positions_answer == nullptr) own = (joint_ ? *joint_ : *tangent_).correct(query);
+  const TargetCorrection& where = own ? *own : *positions_answer;
+  VRREG_THROW_UNLESS(std::ssize(where.stencils) == n,
+                     "orientation correction: the positions' answer has " << where.stencils.size()
+                                                                          << " points, not " << n);
   out.status.reserve(static_cast<std::size_t>(n));
   for (const Stencil& s : where.stencils) out.status.push_back(s.status);
   if (predicts_sd()) {

@@ -38,7 +38,7 @@ OrientationCorrector fit_orientation(const RegistrationModel& model, const Corre
 
 std::optional<OrientationCorrection> correct_orientation_rows(
     const RegistrationModel& model, const MeasurementSet& set, const std::vector<std::size_t>& rows,
-    const Corrector& positions, const CorrectionQuery& query,
+    const Corrector& positions, const CorrectionQuery& query, const TargetCorrection& answer,
     const std::optional<kinematics::SerialChain>& robot) {
   if (!has_fiducial_orientations(model)) return std::nullopt;
   std::vector<Eigen::Matrix3d> R_sensor_marker;
@@ -49,9 +49,9 @@ std::optional<OrientationCorrection> correct_orientation_rows(
   }
   if (model.orientation_corrector && model.corrector &&
       positions.shares_fit_with(*model.corrector)) {
-    return model.orientation_corrector->correct(query, R_sensor_marker);
+    return model.orientation_corrector->correct(query, R_sensor_marker, &answer);
   }
-  return fit_orientation(model, positions, robot).correct(query, R_sensor_marker);
+  return fit_orientation(model, positions, robot).correct(query, R_sensor_marker, &answer);
 }
 
 }  // namespace vrreg::pipeline_detail

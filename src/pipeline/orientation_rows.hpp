@@ -32,13 +32,14 @@ OrientationInputs orientation_inputs(const RegistrationModel& model);
 OrientationCorrector fit_orientation(const RegistrationModel& model, const Corrector& positions,
                                      const std::optional<kinematics::SerialChain>& robot);
 
-/// The `rows` of `set` (the points of `query`, corrected for their positions by `positions`)
+/// The `rows` of `set` (the points of `query`, corrected for their positions by `positions`:
+/// `answer`)
 /// with their orientations corrected; nullopt unless the model's fiducials carry measured and
 /// commanded orientations and every row a measured one. `robot`: as for the positions. The
 /// model's own orientation field when `positions` is the model's corrector, else one fitted now.
 std::optional<OrientationCorrection> correct_orientation_rows(
     const RegistrationModel& model, const MeasurementSet& set, const std::vector<std::size_t>& rows,
-    const Corrector& positions, const CorrectionQuery& query,
+    const Corrector& positions, const CorrectionQuery& query, const TargetCorrection& answer,
     const std::optional<kinematics::SerialChain>& robot);
 
 }  // namespace vrreg::pipeline_detail

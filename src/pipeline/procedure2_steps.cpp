@@ -167,7 +167,8 @@ TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementS
     query.extrapolate = request.extrapolate;
     TargetCorrection positions = corrector.correct(query);
     if (orientation != nullptr) {
-      *orientation = correct_orientation_rows(model, set, rows, corrector, query, request.robot);
+      *orientation =
+          correct_orientation_rows(model, set, rows, corrector, query, positions, request.robot);
     }
     return positions;
   };

@@ -92,9 +92,12 @@ class OrientationCorrector {
 
   /// Corrects the orientations `R_sensor_marker` (one per point of `query`, measured) of the
   /// points of `query` (as for the positions' Corrector::correct). Throws InputError on a count
-  /// mismatch or what the method needs and the query lacks.
+  /// mismatch or what the method needs and the query lacks. `positions_answer`: the positions'
+  /// correction of the same query when the caller has it; the joint model then reads where it
+  /// holds from it instead of correcting the positions again.
   [[nodiscard]] OrientationCorrection correct(
-      const CorrectionQuery& query, std::span<const Eigen::Matrix3d> R_sensor_marker) const;
+      const CorrectionQuery& query, std::span<const Eigen::Matrix3d> R_sensor_marker,
+      const TargetCorrection* positions_answer = nullptr) const;
 
   [[nodiscard]] InterpolationMethod method() const { return method_; }
   /// What was fitted, e.g. "kriging ..., about the mean rotation 0.41 mrad".
