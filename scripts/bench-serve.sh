@@ -5,7 +5,8 @@
 # protocol and on HTTP, for an A1-size kriging model, the simulated A1 cell's kriging
 # model (tabulated every 5 mm) and its RRBC grid model, beside a minimal Python service
 # wrapping scipy's RBFInterpolator (python/benchmarks/serve_peer.py). Every line-protocol reply of
-# vrreg is checked against `vrreg correct`'s CSV (wrong = 0).
+# vrreg is checked against `vrreg correct`'s CSV (wrong = 0), but for the poses (checked against
+# vrreg::correct in tests/serve/serve_orientation_test.cpp).
 #   scripts/bench-serve.sh [SECONDS_PER_RUN]        (default 5; needs the release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,11 +24,18 @@ trap cleanup EXIT
 
 /usr/bin/python3 python/benchmarks/serve_cell.py "$work/lattice.csv" "$work/lattice.txt"
 "$vrreg" register --fiducials "$work/lattice.csv" --interpolation kriging -o "$work/lattice.json" >/dev/null
-"$vrreg" simulate ur5 A1 --seed 1 -o "$work/a1.csv" >/dev/null
+# With a rigid-body marker: the positions are those without it, bit for bit, and the kriging
+# model also answers poses.
+"$vrreg" simulate ur5 A1 --seed 1 --rigid-body-mm 50 -o "$work/a1.csv" >/dev/null
 "$vrreg" register --fiducials "$work/a1.csv" --interpolation kriging -o "$work/a1-kriging.json" >/dev/null
 "$vrreg" register --fiducials "$work/a1.csv" -o "$work/a1-grid.json" >/dev/null
 # The A1 targets' first readings, as points to correct.
 awk -F, '!/^#/ && $2 == "target" && !seen[$1]++ { print $6, $7, $8 }' "$work/a1.csv" > "$work/a1.txt"
+# ... and as poses, the marker's measured orientation as a quaternion.
+awk -F, '/^point,/ { for (i = 1; i <= NF; ++i) col[$i] = i }
+  !/^#/ && $2 == "target" && !seen[$1]++ {
+    print $6, $7, $8, "quat", $col["sensor_qx"], $col["sensor_qy"], $col["sensor_qz"], $col["sensor_qw"] }' \
+  "$work/a1.csv" > "$work/a1-pose.txt"
 
 # What `vrreg correct` writes, as the line protocol would reply it.
 expect() {  # MODEL_JSON POINTS_TXT OUT
@@ -59,16 +67,18 @@ peer=$(port_of "$work/peer.log" "ready")
 
 echo "| service | model | protocol | clients | corrections/s | p50 | p99 | wrong |"
 echo "|---|---|---|---|---|---|---|---|"
-run() {  # SERVICE MODEL PROTOCOL ADDRESS CLIENTS POINTS [EXPECT]
-  local args=("--$3" "$4" --model "$2" --points "$6" --clients "$5" --seconds "$seconds")
-  [[ -n ${7:-} ]] && args+=(--expect "$7")
+run() {  # SERVICE MODEL[ LABEL] PROTOCOL ADDRESS CLIENTS POINTS [EXPECT]
+  local args=("--$3" "$4" --model "${2%% *}" --points "$6" --clients "$5" --seconds "$seconds")
+  local checked=False
+  [[ -n ${7:-} ]] && { args+=(--expect "$7"); checked=True; }
   "$load" "${args[@]}" | /usr/bin/python3 -c "
 import json, sys
 r = json.load(sys.stdin)
-print(f\"| $1 | $2 | {r['protocol']} | {r['clients']} | {r['per_second']:.0f} | {r['p50_us']:.0f} us | {r['p99_us']:.0f} us | {r['wrong']} |\")"
+print(f\"| $1 | $2 | {r['protocol']} | {r['clients']} | {r['per_second']:.0f} | {r['p50_us']:.0f} us | {r['p99_us']:.0f} us | {r['wrong'] if $checked else '-'} |\")"
 }
 for c in 1 16 64; do run vrreg lattice line 127.0.0.1:$line $c "$work/lattice.txt" "$work/lattice.expect"; done
 for c in 1 16 64; do run vrreg lattice http 127.0.0.1:$http $c "$work/lattice.txt"; done
 for c in 1 16 64; do run vrreg a1g line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-grid.expect"; done
 for c in 1 16 64; do run vrreg a1k line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-kriging.expect"; done
+for c in 1 16 64; do run vrreg "a1k pose" line 127.0.0.1:$line $c "$work/a1-pose.txt"; done
 for c in 1 16 64; do run "scipy peer" lattice line 127.0.0.1:$peer $c "$work/lattice.txt"; done

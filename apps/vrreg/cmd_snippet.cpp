@@ -21,6 +21,7 @@ struct SnippetArgs {
   std::string token_file;
   std::string output;
   std::string eki_config;
+  bool pose = false;
 };
 
 void run_snippet(const SnippetArgs& args) {
@@ -34,12 +35,17 @@ void run_snippet(const SnippetArgs& args) {
   std::vector<io::OutputFile> outputs;
   if (args.language == "urscript") {
     if (!args.eki_config.empty()) throw InputError("--eki-config: for krl only");
+    if (args.pose) {
+      throw InputError(
+          "--pose: for krl only (the URScript has vrreg_correct_pose beside "
+          "vrreg_correct)");
+    }
     outputs.push_back({args.output, serve::urscript_client(o)});
   } else {
     if (args.eki_config.empty()) {
       throw InputError("--eki-config: krl needs the EthernetKRL configuration file (vrreg.xml)");
     }
-    outputs.push_back({args.output, serve::krl_client(o)});
+    outputs.push_back({args.output, args.pose ? serve::krl_pose_client(o) : serve::krl_client(o)});
     outputs.push_back({args.eki_config, serve::krl_eki_config(o)});
   }
   io::write_files_atomically(outputs);
@@ -51,7 +57,8 @@ void add_snippet_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "snippet",
       "Write the robot-program function that asks 'vrreg serve' for a correction (urscript: "
-      "vrreg_correct(p); krl: VRREG_CORRECT over EthernetKRL)");
+      "vrreg_correct(p) and vrreg_correct_pose(p); krl: VRREG_CORRECT, or VRREG_CORRECT_POSE "
+      "with --pose, over EthernetKRL)");
   cmd->add_option("language", args->language, "urscript or krl")
       ->required()
       ->check(CLI::IsMember({"urscript", "krl"}));
@@ -67,6 +74,9 @@ void add_snippet_command(CLI::App& app) {
   add_output_option(*cmd, "-o,--output", args->output, "write the function here")->required();
   add_output_option(*cmd, "--eki-config", args->eki_config,
                     "krl: write the EthernetKRL configuration (XML) here");
+  cmd->add_flag("--pose", args->pose,
+                "krl: VRREG_CORRECT_POSE, the whole FRAME (X, Y, Z, A, B, C), for models "
+                "registered with rigid-body fiducials (file VRREG_CORRECT_POSE.src)");
   cmd->callback([args] { run_snippet(*args); });
 }
 

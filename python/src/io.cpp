@@ -24,6 +24,19 @@ Points3 location_points(const MeasurementSet& set, bool robot) {
   return out;
 }
 
+// The orientations `member` of every location as (N, 4) x, y, z, w; None unless all have one.
+py::object quaternions(const MeasurementSet& set,
+                       std::optional<Eigen::Quaterniond> Location::*member) {
+  py::array_t<double> out({static_cast<py::ssize_t>(set.locations.size()), py::ssize_t{4}});
+  auto q = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < set.locations.size(); ++i) {
+    const std::optional<Eigen::Quaterniond>& v = set.locations[i].*member;
+    if (!v) return py::none();
+    for (int k = 0; k < 4; ++k) q(static_cast<py::ssize_t>(i), k) = v->coeffs()(k);
+  }
+  return out;
+}
+
 py::array joints(const MeasurementSet& set) {
   py::array_t<double> out(
       {static_cast<py::ssize_t>(set.locations.size()), static_cast<py::ssize_t>(set.n_joints)});
@@ -96,6 +109,16 @@ void bind_io(py::module_& m) {
           "repeat readings averaged into each location")
       .def_property_readonly("joints", &joints,
                              "(N, n_joints) joint angles [rad] (n_joints may be 0)")
+      .def_property_readonly(
+          "sensor_q",
+          [](const MeasurementSet& s) { return quaternions(s, &Location::q_sensor_marker); },
+          "(N, 4) mean measured orientations, sensor frame, unit quaternions (x, y, z, w); None "
+          "unless every location has one (rigid-body markers: sensor_qx..qw columns)")
+      .def_property_readonly(
+          "robot_q",
+          [](const MeasurementSet& s) { return quaternions(s, &Location::q_robot_marker); },
+          "(N, 4) commanded orientations, robot frame, unit quaternions (x, y, z, w); None "
+          "unless every location has one (robot_qx..qw columns)")
       .def_property_readonly("n_joints", [](const MeasurementSet& s) { return s.n_joints; })
       .def_property_readonly("has_config", [](const MeasurementSet& s) { return s.has_config; })
       .def("__repr__", &set_repr);

@@ -68,9 +68,10 @@ auto on_points(const py::handle& data, const py::handle& robot, const PointExtra
   if (const MeasurementSet* set = as_measurements(data)) {
     VRREG_THROW_UNLESS(robot.is_none() && extras.weights.is_none() && extras.names.is_none() &&
                            extras.configs.is_none() && extras.joints.is_none() &&
-                           extras.n_readings.is_none() && extras.sensor_sq_dev.is_none(),
-                       "robot, weights, names, configs, joints, n_readings and sensor_sq_dev "
-                       "go with arrays; a Measurements object carries them");
+                           extras.n_readings.is_none() && extras.sensor_sq_dev.is_none() &&
+                           extras.sensor_q.is_none() && extras.robot_q.is_none(),
+                       "robot, weights, names, configs, joints, n_readings, sensor_sq_dev, "
+                       "sensor_q and robot_q go with arrays; a Measurements object carries them");
     return run(*set);
   }
   const MeasuredPoints points = measured_points(data, robot, extras);
@@ -87,6 +88,9 @@ sensor: (N, 3) measured positions, sensor frame, METRES (any strides; float32 co
 robot: (N, 3) nominal positions, robot frame, METRES.
 weights (N,), names (N labels), configs (N,) ints, joints (N, n) [rad], n_readings (N,) and
   sensor_sq_dev (N, 3) [m^2]: optional per-point extras (see vrreg::MeasuredPoints).
+sensor_q, robot_q: (N, 4) unit quaternions (x, y, z, w), the rigid-body marker's measured
+  orientation (sensor frame) and commanded one (robot frame): with both, the model also fits
+  an orientation field (docs/orientation.md).
 config: use only this configuration label. scale: also fit a uniform scale (not the paper's).
 robust: reject fiducials whose correction disagrees with their neighbours' (a displaced or
   swapped marker; result.outliers) and fill them from the neighbours.
@@ -105,7 +109,9 @@ constexpr const char* kEvaluateDoc =
 
 sensor: (N, 3) measured target positions, sensor frame, METRES, or a vrreg.Measurements (its
   target rows; as `vrreg evaluate --targets`). robot: (N, 3) nominal positions, robot frame, METRES.
-names, configs, joints: optional per-target extras. config: evaluate this label only.
+names, configs, joints: optional per-target extras. sensor_q, robot_q (N, 4) quaternions
+(x, y, z, w): measured and commanded orientations, for result.orientation (the model's
+fiducials must carry orientations). config: evaluate this label only.
 interpolation / cube_edge [m]: override the model's. strategy, joint_norm: Procedure 2 overrides.
 arm: the robot for the 'joint' model (default: the model's), as --robot. refit, exact,
 extrapolate: as correct(). Raises ValueError (vrreg.InputError) on bad input.)doc";
@@ -116,7 +122,10 @@ constexpr const char* kCorrectDoc =
 
 sensor: (N, 3) measured positions, sensor frame, METRES, or a vrreg.Measurements (its target rows;
   as `vrreg correct --points`). robot: (N, 3) nominal positions [m], needed by octuplet only.
-names, configs, joints: optional per-point extras. config, interpolation, cube_edge [m]: override
+names, configs, joints: optional per-point extras. sensor_q (N, 4) quaternions (x, y, z, w): the
+points' measured orientations, sensor frame: result.orientation gives the orientations to command
+(the model's fiducials must carry orientations, else ValueError). config, interpolation,
+cube_edge [m]: override
 the model's; arm: the robot for the 'joint' model (default: the model's). Points outside the
 fiducials keep the uncorrected mapping and a status saying why. The model's fitted corrector is
 used as saved (fit once, correct many): refit=True fits it again, exact=True corrects kriging and
@@ -130,25 +139,28 @@ void bind_pipeline(py::module_& m) {
       "register",
       [](const py::object& sensor, const py::object& robot, const py::object& weights,
          const py::object& names, const py::object& configs, const py::object& joints,
-         const py::object& n_readings, const py::object& sensor_sq_dev, std::optional<int> config,
-         bool scale, bool robust, std::optional<double> sigma_rep, const std::string& interpolation,
+         const py::object& n_readings, const py::object& sensor_sq_dev, const py::object& sensor_q,
+         const py::object& robot_q, std::optional<int> config, bool scale, bool robust,
+         std::optional<double> sigma_rep, const std::string& interpolation,
          std::optional<double> cube_edge, int strategy, const std::string& joint_norm,
          std::optional<std::uint64_t> seed, bool rigid_body, std::optional<PathText> arm) {
         const RegisterOptions options =
             RegisterKwargs{config,    scale,    robust,     sigma_rep,  interpolation, cube_edge,
                            strategy,  joint_norm, seed,     rigid_body, arm}
                 .options();
-        return on_points(sensor, robot,
-                         {weights, names, configs, joints, n_readings, sensor_sq_dev},
-                         [&](const auto& points) {
-                           py::gil_scoped_release nogil;
-                           return register_fiducials(points, options);
-                         });
+        return on_points(
+            sensor, robot,
+            {weights, names, configs, joints, n_readings, sensor_sq_dev, sensor_q, robot_q},
+            [&](const auto& points) {
+              py::gil_scoped_release nogil;
+              return register_fiducials(points, options);
+            });
       },
       py::arg("sensor"), py::arg("robot") = py::none(), py::kw_only(),
       py::arg("weights") = py::none(), py::arg("names") = py::none(),
       py::arg("configs") = py::none(), py::arg("joints") = py::none(),
       py::arg("n_readings") = py::none(), py::arg("sensor_sq_dev") = py::none(),
+      py::arg("sensor_q") = py::none(), py::arg("robot_q") = py::none(),
       py::arg("config") = py::none(), py::arg("scale") = false, py::arg("robust") = false,
       py::arg("sigma_rep") = py::none(), py::arg("interpolation") = "linear",
       py::arg("cube_edge") = py::none(), py::arg("strategy") = 0, py::arg("joint_norm") = "l2",
@@ -159,10 +171,10 @@ void bind_pipeline(py::module_& m) {
       "evaluate",
       [](const RegistrationModel& model, const py::object& sensor, const py::object& robot,
          const py::object& names, const py::object& configs, const py::object& joints,
-         std::optional<int> config, std::optional<std::string> interpolation,
-         std::optional<double> cube_edge, std::optional<int> strategy,
-         std::optional<std::string> joint_norm, std::optional<PathText> arm, bool refit,
-         bool exact, bool extrapolate) {
+         const py::object& sensor_q, const py::object& robot_q, std::optional<int> config,
+         std::optional<std::string> interpolation, std::optional<double> cube_edge,
+         std::optional<int> strategy, std::optional<std::string> joint_norm,
+         std::optional<PathText> arm, bool refit, bool exact, bool extrapolate) {
         EvaluateOptions options;
         options.config = config;
         options.refit = refit;
@@ -176,6 +188,8 @@ void bind_pipeline(py::module_& m) {
         extras.names = names;
         extras.configs = configs;
         extras.joints = joints;
+        extras.sensor_q = sensor_q;
+        extras.robot_q = robot_q;
         return on_points(sensor, robot, extras, [&](const auto& points) {
           py::gil_scoped_release nogil;
           return evaluate(model, points, options);
@@ -183,20 +197,20 @@ void bind_pipeline(py::module_& m) {
       },
       py::arg("model"), py::arg("sensor"), py::arg("robot") = py::none(), py::kw_only(),
       py::arg("names") = py::none(), py::arg("configs") = py::none(),
-      py::arg("joints") = py::none(), py::arg("config") = py::none(),
+      py::arg("joints") = py::none(), py::arg("sensor_q") = py::none(),
+      py::arg("robot_q") = py::none(), py::arg("config") = py::none(),
       py::arg("interpolation") = py::none(), py::arg("cube_edge") = py::none(),
       py::arg("strategy") = py::none(), py::arg("joint_norm") = py::none(),
       py::arg("arm") = py::none(), py::arg("refit") = false, py::arg("exact") = false,
-      py::arg("extrapolate") = false,
-      kEvaluateDoc);
+      py::arg("extrapolate") = false, kEvaluateDoc);
 
   m.def(
       "correct",
       [](const RegistrationModel& model, const py::object& sensor, const py::object& robot,
          const py::object& names, const py::object& configs, const py::object& joints,
-         std::optional<int> config, std::optional<std::string> interpolation,
-         std::optional<double> cube_edge, std::optional<PathText> arm, bool refit, bool exact,
-         bool extrapolate) {
+         const py::object& sensor_q, std::optional<int> config,
+         std::optional<std::string> interpolation, std::optional<double> cube_edge,
+         std::optional<PathText> arm, bool refit, bool exact, bool extrapolate) {
         CorrectOptions options;
         options.config = config;
         options.refit = refit;
@@ -208,6 +222,7 @@ void bind_pipeline(py::module_& m) {
         extras.names = names;
         extras.configs = configs;
         extras.joints = joints;
+        extras.sensor_q = sensor_q;
         return on_points(sensor, robot, extras, [&](const auto& points) {
           py::gil_scoped_release nogil;
           return correct(model, points, options);
@@ -215,11 +230,10 @@ void bind_pipeline(py::module_& m) {
       },
       py::arg("model"), py::arg("sensor"), py::arg("robot") = py::none(), py::kw_only(),
       py::arg("names") = py::none(), py::arg("configs") = py::none(),
-      py::arg("joints") = py::none(), py::arg("config") = py::none(),
-      py::arg("interpolation") = py::none(), py::arg("cube_edge") = py::none(),
-      py::arg("arm") = py::none(), py::arg("refit") = false, py::arg("exact") = false,
-      py::arg("extrapolate") = false,
-      kCorrectDoc);
+      py::arg("joints") = py::none(), py::arg("sensor_q") = py::none(),
+      py::arg("config") = py::none(), py::arg("interpolation") = py::none(),
+      py::arg("cube_edge") = py::none(), py::arg("arm") = py::none(), py::arg("refit") = false,
+      py::arg("exact") = false, py::arg("extrapolate") = false, kCorrectDoc);
 }
 
 }  // namespace vrreg::python

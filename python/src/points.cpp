@@ -8,6 +8,7 @@
 
 #include "arrays.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/rotation.hpp"
 
 namespace vrreg::python {
 namespace {
@@ -57,6 +58,25 @@ void check_like_python(const MeasuredPoints& p, const PointExtras& extras) {
     check_count("sensor_sq_dev", p.sensor_sq_dev_m2.cols(), n);
     check_finite("sensor_sq_dev", p.sensor_sq_dev_m2);
   }
+  if (!extras.sensor_q.is_none()) {
+    check_count("sensor_q", static_cast<Eigen::Index>(p.q_sensor_marker.size()), n);
+  }
+  if (!extras.robot_q.is_none()) {
+    check_count("robot_q", static_cast<Eigen::Index>(p.q_robot_marker.size()), n);
+  }
+}
+
+// An (N, 4) array of unit quaternions (x, y, z, w), each checked as the library checks them
+// but named as the Python caller named the argument and row.
+std::vector<Eigen::Quaterniond> quaternions_from(const py::handle& array, const char* what) {
+  const Eigen::MatrixXd xyzw = rows_from(array, what, -1, 4);
+  std::vector<Eigen::Quaterniond> out;
+  out.reserve(static_cast<std::size_t>(xyzw.cols()));
+  for (Eigen::Index i = 0; i < xyzw.cols(); ++i) {
+    const std::string row = fmt::format("{} row {}", what, i);
+    out.push_back(unit_quaternion(xyzw.col(i), row.c_str()));
+  }
+  return out;
 }
 
 }  // namespace
@@ -82,6 +102,8 @@ MeasuredPoints measured_points(const py::handle& sensor, const py::handle& robot
   if (!extras.sensor_sq_dev.is_none()) {
     p.sensor_sq_dev_m2 = points_from(extras.sensor_sq_dev, "sensor_sq_dev");
   }
+  if (!extras.sensor_q.is_none()) p.q_sensor_marker = quaternions_from(extras.sensor_q, "sensor_q");
+  if (!extras.robot_q.is_none()) p.q_robot_marker = quaternions_from(extras.robot_q, "robot_q");
   check_like_python(p, extras);
   return p;
 }

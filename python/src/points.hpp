@@ -18,6 +18,8 @@ struct PointExtras {
   py::object joints = py::none();         ///< (N, n_joints) [rad]
   py::object n_readings = py::none();     ///< (N,) repeat readings per location
   py::object sensor_sq_dev = py::none();  ///< (N, 3) per-axis sums of squared deviations [m^2]
+  py::object sensor_q = py::none();  ///< (N, 4) measured orientations, sensor frame (x, y, z, w)
+  py::object robot_q = py::none();   ///< (N, 4) commanded orientations, robot frame (x, y, z, w)
 };
 
 /// sensor (N, 3) [m], robot (N, 3) [m] or None, and the extras, copied once into the library's

@@ -13,25 +13,35 @@ import vrreg
 from conftest import SOURCE_DIR
 
 
-@pytest.fixture(scope="module")
-def service(tmp_path_factory, example_cell):
+def _vrreg_command():
     path = os.environ.get("VRREG_CLI", str(SOURCE_DIR / "build" / "release" / "bin" / "vrreg"))
     if not os.path.exists(path):
         pytest.skip(f"the vrreg command is not built ({path}); set VRREG_CLI")
-    d = tmp_path_factory.mktemp("serve")
-    model = d / "cell.json"
-    subprocess.run([path, "register", "--fiducials", example_cell, "--interpolation", "kriging",
-                    "-o", str(model)], check=True, capture_output=True)
+    return path
+
+
+def _serve(path, model):
+    """`vrreg serve` of `model` as 'cell' on a free port: the process and its line port."""
     proc = subprocess.Popen([path, "serve", "--model", f"cell={model}", "--listen", "127.0.0.1:0"],
                             stderr=subprocess.PIPE, text=True)
     port = None
     deadline = time.time() + 60
     while port is None and time.time() < deadline:
-        line = proc.stderr.readline()
-        m = re.search(r"line protocol on 127\.0\.0\.1:(\d+)", line)
+        m = re.search(r"line protocol on 127\.0\.0\.1:(\d+)", proc.stderr.readline())
         if m:
             port = int(m.group(1))
     assert port, "vrreg serve did not start"
+    return proc, port
+
+
+@pytest.fixture(scope="module")
+def service(tmp_path_factory, example_cell):
+    path = _vrreg_command()
+    d = tmp_path_factory.mktemp("serve")
+    model = d / "cell.json"
+    subprocess.run([path, "register", "--fiducials", example_cell, "--interpolation", "kriging",
+                    "-o", str(model)], check=True, capture_output=True)
+    proc, port = _serve(path, model)
     yield path, model, port, d
     proc.terminate()
     proc.wait(timeout=30)
@@ -84,3 +94,50 @@ def test_client_refusals_raise(service):
             client.correct("cell", [float("nan"), 0.0, 0.0])
         with pytest.raises(ValueError):
             client.correct("cell", [1.0, 2.0])
+
+
+@pytest.fixture(scope="module")
+def pose_service(tmp_path_factory):
+    path = _vrreg_command()
+    d = tmp_path_factory.mktemp("serve_pose")
+    cell, model = d / "a1.csv", d / "cell.json"
+    subprocess.run([path, "simulate", "ur5", "A1", "--seed", "4", "--rigid-body-mm", "50", "-o",
+                    str(cell)], check=True, capture_output=True)
+    subprocess.run([path, "register", "--fiducials", str(cell), "--interpolation", "trilinear",
+                    "-o", str(model)], check=True, capture_output=True)
+    proc, port = _serve(path, model)
+    yield path, cell, model, port
+    proc.terminate()
+    proc.wait(timeout=30)
+
+
+def test_client_corrects_orientations_as_the_library(pose_service):
+    _, cell, model_path, port = pose_service
+    measurements = vrreg.read_measurements(cell)
+    model = vrreg.load_model(str(model_path))
+    targets = np.array([r == "target" for r in measurements.roles])
+    sensor_mm = 1e3 * measurements.sensor[targets]
+    sensor_q = measurements.sensor_q[targets]
+    # As the service reads them: mm, divided by 1000.
+    expected = vrreg.correct(model, sensor_mm / 1e3, sensor_q=sensor_q)
+    ok = expected.status == 0
+    with vrreg.Client(port=port) as client:
+        compared = 0
+        for i in range(0, len(sensor_mm), 7):
+            if not ok[i]:
+                continue
+            c = client.correct("cell", sensor_mm[i], sensor_q=sensor_q[i])
+            np.testing.assert_allclose(c.robot_mm, 1e3 * expected.corrected[i], rtol=0, atol=1e-8)
+            q = expected.orientation["q_robot_marker_corrected"][i]
+            q = q if q[3] >= 0 else -q
+            np.testing.assert_allclose(c.robot_q, q, rtol=0, atol=1e-11)
+            assert abs(c.angle_sd_mrad - 1e3 * expected.orientation["predicted_angle_sd"][i]) < 1e-9
+            compared += 1
+        assert compared > 10
+        plain = client.correct("cell", sensor_mm[0])
+        assert plain.robot_q is None and plain.angle_sd_mrad is None
+        with pytest.raises(ValueError):
+            client.correct("cell", sensor_mm[0], sensor_q=[0.0, 0.0, 1.0])
+        with pytest.raises(vrreg.ServiceError) as e:
+            client.correct("cell", sensor_mm[0], sensor_q=[0.0, 0.0, 2.0, 1.0])
+        assert e.value.code == 1

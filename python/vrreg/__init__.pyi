@@ -107,6 +107,10 @@ class Measurements:
     @property
     def joints(self) -> _Array: ...
     @property
+    def sensor_q(self) -> Optional[_Array]: ...
+    @property
+    def robot_q(self) -> Optional[_Array]: ...
+    @property
     def n_joints(self) -> int: ...
     @property
     def has_config(self) -> bool: ...
@@ -299,6 +303,7 @@ def register(sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = No
              weights: Optional[_ArrayLike] = None, names: Optional[Sequence[str]] = None,
              configs: Optional[_ArrayLike] = None, joints: Optional[_ArrayLike] = None,
              n_readings: Optional[_ArrayLike] = None, sensor_sq_dev: Optional[_ArrayLike] = None,
+             sensor_q: Optional[_ArrayLike] = None, robot_q: Optional[_ArrayLike] = None,
              config: Optional[int] = None, scale: bool = False, robust: bool = False,
              sigma_rep: Optional[float] = None, interpolation: str = "linear",
              cube_edge: Optional[float] = None, strategy: int = 0, joint_norm: str = "l2",
@@ -307,7 +312,8 @@ def register(sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = No
     """Registers fiducials (Eq. 2), sigma_L (Eq. 1), noise (Eq. 9), corrections (Eq. 6). Metres."""
 def evaluate(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = None,
              *, names: Optional[Sequence[str]] = None, configs: Optional[_ArrayLike] = None,
-             joints: Optional[_ArrayLike] = None, config: Optional[int] = None,
+             joints: Optional[_ArrayLike] = None, sensor_q: Optional[_ArrayLike] = None,
+             robot_q: Optional[_ArrayLike] = None, config: Optional[int] = None,
              interpolation: Optional[str] = None, cube_edge: Optional[float] = None,
              strategy: Optional[int] = None, joint_norm: Optional[str] = None,
              arm: Optional[_Path] = None, refit: bool = False,
@@ -315,8 +321,8 @@ def evaluate(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_A
     """TRE and RMS_T uncorrected and corrected (Eq. 3, 4, 7, 8), gamma, N_bad. Metres."""
 def correct(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = None,
             *, names: Optional[Sequence[str]] = None, configs: Optional[_ArrayLike] = None,
-            joints: Optional[_ArrayLike] = None, config: Optional[int] = None,
-            interpolation: Optional[str] = None,
+            joints: Optional[_ArrayLike] = None, sensor_q: Optional[_ArrayLike] = None,
+            config: Optional[int] = None, interpolation: Optional[str] = None,
             cube_edge: Optional[float] = None, arm: Optional[_Path] = None, refit: bool = False,
             exact: bool = False, extrapolate: bool = False) -> CorrectResult:
     """RRBC-corrected robot-frame positions to command (Eq. 7, 8). Metres."""

@@ -33,10 +33,14 @@ class ServiceError(RuntimeError):
 @dataclass(frozen=True)
 class Correction:
     """One corrected point: the position to command (robot frame, mm) and its predicted sd (mm;
-    0 when the model's method predicts none)."""
+    0 when the model's method predicts none). With a measured orientation (`sensor_q`): the
+    orientation to command, robot frame, as a unit quaternion (x, y, z, w; w >= 0), and the
+    predicted sd of its angle error (mrad; 0 when the method predicts none); else None."""
 
     robot_mm: npt.NDArray[np.float64]
     sd_mm: float
+    robot_q: Optional[npt.NDArray[np.float64]] = None
+    angle_sd_mrad: Optional[float] = None
 
 
 def _number(value: float, what: str) -> str:
@@ -62,10 +66,13 @@ class Client:
 
     def correct(self, model: str, sensor_mm: npt.ArrayLike, *,
                 joints_rad: Optional[npt.ArrayLike] = None, config: Optional[int] = None,
-                extrapolate: bool = False) -> Correction:
+                extrapolate: bool = False,
+                sensor_q: Optional[npt.ArrayLike] = None) -> Correction:
         """Corrects one point measured in the sensor frame [mm] with the served model `model`;
         `joints_rad` (the commanded joints) for the joint-space model, `config` (the arm
-        configuration label) for models built with Procedure 2 strategies."""
+        configuration label) for models built with Procedure 2 strategies; `sensor_q` (the
+        rigid-body marker's measured orientation, sensor frame, unit quaternion x, y, z, w) to
+        have the orientation corrected too (models registered with orientations)."""
         p = np.asarray(sensor_mm, dtype=np.float64).reshape(-1)
         if p.shape != (3,):
             raise ValueError(f"sensor_mm: expected 3 coordinates, got shape {np.shape(sensor_mm)}")
@@ -77,14 +84,23 @@ class Client:
             fields += ["joints"] + [_number(v, "joints_rad") for v in q]
         if extrapolate:
             fields.append("extrapolate")
+        if sensor_q is not None:
+            q = np.asarray(sensor_q, dtype=np.float64).reshape(-1)
+            if q.shape != (4,):
+                raise ValueError(f"sensor_q: expected (x, y, z, w), got shape {np.shape(sensor_q)}")
+            fields += ["quat"] + [_number(v, "sensor_q") for v in q]
         reply = self._ask(" ".join(fields) + "\n")
         values = [float(v) for v in reply.strip("()").split(",")]
-        if len(values) != 4:
+        expected = 4 if sensor_q is None else 9
+        if len(values) != expected:
             raise ServiceError(0, f"unexpected reply {reply!r}")
-        if values[3] < 0:
-            code = int(-values[3])
+        sd = values[3] if sensor_q is None else values[7]
+        if sd < 0:
+            code = int(-sd)
             raise ServiceError(code, f"point refused: {CODES.get(code, 'code %d' % code)}")
-        return Correction(np.array(values[:3]), values[3])
+        if sensor_q is None:
+            return Correction(np.array(values[:3]), sd)
+        return Correction(np.array(values[:3]), sd, np.array(values[3:7]), values[8])
 
     def correct_many(self, model: str, sensor_mm: npt.ArrayLike, **options: object) -> list[Correction]:
         """correct() for each row of an (N, 3) array [mm]; raises at the first refusal."""

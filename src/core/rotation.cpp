@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 
 namespace vrreg {
 
@@ -29,6 +30,41 @@ Eigen::Vector3d rotation_log(const Eigen::Matrix3d& rotation) {
 
 double rotation_angle_rad(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
   return rotation_log(b * a.transpose()).norm();
+}
+
+Eigen::Quaterniond unit_quaternion(const Eigen::Vector4d& xyzw, const char* what) {
+  VRREG_THROW_UNLESS(xyzw.allFinite(), what << ": a quaternion that is not finite");
+  const double norm = xyzw.norm();
+  VRREG_THROW_UNLESS(std::abs(norm - 1.0) <= kUnitQuaternionTolerance,
+                     what << ": the quaternion's norm is " << norm << ", not 1 (within "
+                          << kUnitQuaternionTolerance << "); give a unit quaternion (x, y, z, w)");
+  const Eigen::Quaterniond q(xyzw(3), xyzw(0), xyzw(1), xyzw(2));
+  // A quaternion already unit to rounding keeps its bits: the same orientation given twice (a
+  // file's, then as arrays) gives the same numbers.
+  return std::abs(norm - 1.0) <= kUnitQuaternionRounding ? q : q.normalized();
+}
+
+Eigen::Vector3d kuka_abc_deg(const Eigen::Matrix3d& r) {
+  // R = Rz(A) Ry(B) Rx(C): r20 = -sin B, r00 = cos A cos B, r10 = sin A cos B, r21 = cos B sin C,
+  // r22 = cos B cos C. atan2 of both components keeps every angle accurate, also near B = 90 deg.
+  const double cos_b = std::hypot(r(0, 0), r(1, 0));
+  const double b = std::atan2(-r(2, 0), cos_b);
+  double a = 0.0;
+  double c = 0.0;
+  if (cos_b > 1e-12) {
+    a = std::atan2(r(1, 0), r(0, 0));
+    c = std::atan2(r(2, 1), r(2, 2));
+  } else {  // gimbal lock: only A +- C is defined; C = 0
+    a = std::atan2(-r(0, 1), r(1, 1));
+  }
+  return {units::rad_to_deg(a), units::rad_to_deg(b), units::rad_to_deg(c)};
+}
+
+Eigen::Matrix3d rotation_from_kuka_abc_deg(const Eigen::Vector3d& abc_deg) {
+  return (Eigen::AngleAxisd(units::deg_to_rad(abc_deg(0)), Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(units::deg_to_rad(abc_deg(1)), Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(units::deg_to_rad(abc_deg(2)), Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
 }
 
 Eigen::Matrix3d rotation_mean(std::span<const Eigen::Matrix3d> rotations) {

@@ -10,6 +10,7 @@
 
 #include "measurement_header.hpp"
 #include "vrreg/core/measurement.hpp"
+#include "vrreg/core/rotation.hpp"
 
 namespace vrreg::io::detail {
 
@@ -28,7 +29,7 @@ struct MeasurementRow {
 };
 
 /// A quaternion read from a file is accepted when its norm is within this of 1, then normalised.
-inline constexpr double kQuaternionNormTolerance = 1e-3;
+inline constexpr double kQuaternionNormTolerance = kUnitQuaternionTolerance;
 
 /// Parses the trimmed `fields` of line `line` into `row`; throws FileError on any bad value.
 void parse_measurement_row(const std::vector<std::string_view>& fields,

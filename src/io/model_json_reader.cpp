@@ -13,6 +13,7 @@
 #include "model_monitoring_json.hpp"
 #include "model_units.hpp"
 #include "vrreg/core/progress.hpp"
+#include "vrreg/core/rotation.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/input_file.hpp"
@@ -108,7 +109,7 @@ Location read_fiducial(const json& item, const std::string& path, const detail::
     }
     // What register wrote is unit to rounding: kept to the bit, so a model read back corrects
     // exactly as the one written; anything further off is normalised.
-    return std::abs(q.norm() - 1.0) <= 1e-12 ? q : q.normalized();
+    return std::abs(q.norm() - 1.0) <= kUnitQuaternionRounding ? q : q.normalized();
   };
   if (item.contains("q_sensor_marker")) {
     loc.q_sensor_marker = quaternion("q_sensor_marker");

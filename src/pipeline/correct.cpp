@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/pipeline/correct.hpp"
 
-#include "vrreg/pipeline/prepared_corrector.hpp"
-
 #include "model_corrector.hpp"
+#include "orientation_rows.hpp"
 #include "procedure2_steps.hpp"
 #include "set_rows.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/rotation.hpp"
+#include "vrreg/pipeline/prepared_corrector.hpp"
 
 namespace vrreg {
 namespace {
@@ -65,7 +66,8 @@ pipeline_detail::CorrectorRequest corrector_request(const RegistrationModel& mod
 
 // Every point, straight from the caller's arrays: no per-point records (10^6 points stay 10^6
 // columns), the same numbers as the set's way.
-CorrectResult correct_points(const Corrector& corrector, const MeasuredPoints& points,
+CorrectResult correct_points(const Corrector& corrector, const OrientationCorrector* orientation,
+                             const MeasuredPoints& points,
                              const InterpolationSettings& interpolation, bool extrapolate) {
   points.validate(false);
   CorrectResult out;
@@ -90,6 +92,15 @@ CorrectResult correct_points(const Corrector& corrector, const MeasuredPoints& p
                         needs.joints ? points.joints_rad : no_joints, sequence);
   query.extrapolate = extrapolate;
   out.correction = corrector.correct(query);
+  if (!points.q_sensor_marker.empty()) {
+    VRREG_THROW_UNLESS(orientation != nullptr, "no orientation field for the points' orientations");
+    std::vector<Eigen::Matrix3d> R_sensor_marker;
+    R_sensor_marker.reserve(points.q_sensor_marker.size());
+    for (const Eigen::Quaterniond& q : points.q_sensor_marker) {
+      R_sensor_marker.push_back(unit_quaternion(q.coeffs(), "q_sensor_marker").toRotationMatrix());
+    }
+    out.orientation = orientation->correct(query, R_sensor_marker, &out.correction);
+  }
   out.names = points.names;
   for (const int config : points.configs) out.configs.emplace_back(config);
   return out;
@@ -100,6 +111,8 @@ MeasuredPoints in_registered_frame(const RegistrationModel& model, const Measure
   if (!model.T_registered_sensor) return points;
   MeasuredPoints out = points;
   out.sensor_m = model.registered_sensor_points(points.sensor_m);
+  const Eigen::Quaterniond turn(model.T_registered_sensor->rotation);
+  for (Eigen::Quaterniond& q : out.q_sensor_marker) q = turn * q;
   return out;
 }
 
@@ -120,10 +133,16 @@ CorrectResult correct(const RegistrationModel& model, const MeasurementSet& poin
 
 CorrectResult correct(const RegistrationModel& model, const MeasuredPoints& points,
                       const CorrectOptions& options) {
+  pipeline_detail::require_orientation_field(model, points.q_sensor_marker.size());
   if (!corrects_point_by_point(model, options)) return correct_as_set(model, points, options);
   model.validate();
   const pipeline_detail::CorrectorRequest request = corrector_request(model, options);
-  return correct_points(pipeline_detail::corrector_for(model, request),
+  const Corrector corrector = pipeline_detail::corrector_for(model, request);
+  std::optional<OrientationCorrector> orientation;
+  if (!points.q_sensor_marker.empty()) {
+    orientation = pipeline_detail::orientation_field_for(model, corrector, request.robot);
+  }
+  return correct_points(corrector, orientation ? &*orientation : nullptr,
                         in_registered_frame(model, points), request.settings, options.extrapolate);
 }
 
@@ -140,8 +159,17 @@ PreparedCorrector::PreparedCorrector(std::shared_ptr<const RegistrationModel> mo
     // The fiducials' joints: every point is compared with them.
     joints_needed_ = static_cast<int>(model_->fiducials.front().q_rad.size());
   }
+  corrects_orientation_ = pipeline_detail::has_fiducial_orientations(*model_);
   if (corrects_point_by_point(*model_, options_)) {
     corrector_ = std::make_shared<const Corrector>(corrector);
+    if (corrects_orientation_) {
+      orientation_ = std::make_shared<const OrientationCorrector>(
+          *pipeline_detail::orientation_field_for(*model_, corrector, request.robot));
+      predicts_angle_sd_ = orientation_->predicts_sd();
+    }
+  } else if (corrects_orientation_) {
+    predicts_angle_sd_ =
+        pipeline_detail::orientation_field_for(*model_, corrector, request.robot)->predicts_sd();
   }
 }
 
@@ -150,17 +178,20 @@ CorrectResult PreparedCorrector::correct(const MeasuredPoints& points) const {
 }
 
 CorrectResult PreparedCorrector::correct(const MeasuredPoints& points, bool extrapolate) const {
+  pipeline_detail::require_orientation_field(*model_, points.q_sensor_marker.size());
   if (!corrector_) {
     CorrectOptions options = options_;
     options.extrapolate = extrapolate;
     return correct_as_set(*model_, points, options);
   }
-  return correct_points(*corrector_, in_registered_frame(*model_, points),
+  return correct_points(*corrector_, orientation_.get(), in_registered_frame(*model_, points),
                         options_.interpolation.apply(model_->interpolation), extrapolate);
 }
 
 InterpolationMethod PreparedCorrector::method() const { return method_; }
 int PreparedCorrector::joints_needed() const { return joints_needed_; }
 bool PreparedCorrector::predicts_sd() const { return predicts_sd_; }
+bool PreparedCorrector::corrects_orientation() const { return corrects_orientation_; }
+bool PreparedCorrector::predicts_angle_sd() const { return predicts_angle_sd_; }
 
 }  // namespace vrreg

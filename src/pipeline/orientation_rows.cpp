@@ -36,6 +36,24 @@ OrientationCorrector fit_orientation(const RegistrationModel& model, const Corre
                                    in.residuals_rad, in.noise_sd_rad);
 }
 
+std::optional<OrientationCorrector> orientation_field_for(
+    const RegistrationModel& model, const Corrector& positions,
+    const std::optional<kinematics::SerialChain>& robot) {
+  if (!has_fiducial_orientations(model)) return std::nullopt;
+  if (model.orientation_corrector && model.corrector &&
+      positions.shares_fit_with(*model.corrector)) {
+    return model.orientation_corrector;
+  }
+  return fit_orientation(model, positions, robot);
+}
+
+void require_orientation_field(const RegistrationModel& model, std::size_t n_orientations) {
+  VRREG_THROW_UNLESS(n_orientations == 0 || has_fiducial_orientations(model),
+                     "the points carry orientations but the model's fiducials do not (register "
+                     "rigid-body fiducials with measured and commanded orientations to correct "
+                     "orientations; docs/orientation.md)");
+}
+
 std::optional<OrientationCorrection> correct_orientation_rows(
     const RegistrationModel& model, const MeasurementSet& set, const std::vector<std::size_t>& rows,
     const Corrector& positions, const CorrectionQuery& query, const TargetCorrection& answer,
@@ -47,11 +65,7 @@ std::optional<OrientationCorrection> correct_orientation_rows(
     if (!l.q_sensor_marker) return std::nullopt;
     R_sensor_marker.push_back(l.q_sensor_marker->toRotationMatrix());
   }
-  if (model.orientation_corrector && model.corrector &&
-      positions.shares_fit_with(*model.corrector)) {
-    return model.orientation_corrector->correct(query, R_sensor_marker, &answer);
-  }
-  return fit_orientation(model, positions, robot).correct(query, R_sensor_marker, &answer);
+  return orientation_field_for(model, positions, robot)->correct(query, R_sensor_marker, &answer);
 }
 
 }  // namespace vrreg::pipeline_detail

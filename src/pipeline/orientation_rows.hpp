@@ -32,6 +32,17 @@ OrientationInputs orientation_inputs(const RegistrationModel& model);
 OrientationCorrector fit_orientation(const RegistrationModel& model, const Corrector& positions,
                                      const std::optional<kinematics::SerialChain>& robot);
 
+/// The orientation field that answers with `positions`: the model's own when `positions` is the
+/// model's corrector, else one fitted now; nullopt unless the model's fiducials carry measured
+/// and commanded orientations.
+std::optional<OrientationCorrector> orientation_field_for(
+    const RegistrationModel& model, const Corrector& positions,
+    const std::optional<kinematics::SerialChain>& robot);
+
+/// Throws InputError when `n_orientations` points carry measured orientations and the model's
+/// fiducials do not (there is no orientation field to correct them with).
+void require_orientation_field(const RegistrationModel& model, std::size_t n_orientations);
+
 /// The `rows` of `set` (the points of `query`, corrected for their positions by `positions`:
 /// `answer`)
 /// with their orientations corrected; nullopt unless the model's fiducials carry measured and

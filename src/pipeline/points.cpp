@@ -5,6 +5,7 @@
 #include <string>
 
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/rotation.hpp"
 
 namespace vrreg {
 namespace {
@@ -12,6 +13,13 @@ namespace {
 void check_count(Eigen::Index got, Eigen::Index n, const char* member) {
   VRREG_THROW_UNLESS(got == 0 || got == n, "points: " << member << " has " << got << " entries for "
                                                       << n << " points (give one each, or none)");
+}
+
+void check_unit(const std::vector<Eigen::Quaterniond>& q, const char* member) {
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const std::string what = std::string("points: ") + member + "[" + std::to_string(i) + "]";
+    (void)unit_quaternion(q[i].coeffs(), what.c_str());
+  }
 }
 
 }  // namespace
@@ -41,6 +49,10 @@ void MeasuredPoints::validate(bool require_robot) const {
   VRREG_THROW_UNLESS(sensor_sq_dev_m2.allFinite() &&
                          (sensor_sq_dev_m2.size() == 0 || sensor_sq_dev_m2.minCoeff() >= 0.0),
                      "points: sensor_sq_dev_m2 must be finite and >= 0");
+  check_count(static_cast<Eigen::Index>(q_sensor_marker.size()), n, "q_sensor_marker");
+  check_count(static_cast<Eigen::Index>(q_robot_marker.size()), n, "q_robot_marker");
+  check_unit(q_sensor_marker, "q_sensor_marker");
+  check_unit(q_robot_marker, "q_robot_marker");
 }
 
 MeasurementSet MeasuredPoints::to_measurement_set(Role role, bool require_robot) const {
@@ -65,6 +77,13 @@ MeasurementSet MeasuredPoints::to_measurement_set(Role role, bool require_robot)
       loc.q_rad.assign(joints_rad.col(i).data(), joints_rad.col(i).data() + joints_rad.rows());
     }
     if (weights.size() > 0) loc.weight = weights(i);
+    const auto k = static_cast<std::size_t>(i);
+    if (!q_sensor_marker.empty()) {
+      loc.q_sensor_marker = unit_quaternion(q_sensor_marker[k].coeffs(), "q_sensor_marker");
+    }
+    if (!q_robot_marker.empty()) {
+      loc.q_robot_marker = unit_quaternion(q_robot_marker[k].coeffs(), "q_robot_marker");
+    }
   }
   return set;
 }

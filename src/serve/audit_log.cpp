@@ -28,8 +28,14 @@ int open_append(const std::string& path) {
 }
 
 std::string mm3_text(const Eigen::Vector3d& v) {
-  return "[" + format_reply_mm(v.x()) + "," + format_reply_mm(v.y()) + "," +
-         format_reply_mm(v.z()) + "]";
+  return "[" + format_reply_number(v.x()) + "," + format_reply_number(v.y()) + "," +
+         format_reply_number(v.z()) + "]";
+}
+
+std::string quaternion_text(const Eigen::Quaterniond& q) {
+  const Eigen::VectorXd xyzw = orientation_in(q, OrientationForm::kQuaternion);
+  return "[" + format_reply_number(xyzw(0)) + "," + format_reply_number(xyzw(1)) + "," +
+         format_reply_number(xyzw(2)) + "," + format_reply_number(xyzw(3)) + "]";
 }
 
 }  // namespace
@@ -60,10 +66,16 @@ void AuditLog::record(const std::string& client, const char* protocol,
   if (request.config) line += fmt::format(R"(,"config":{})", *request.config);
   if (!request.joints_rad.empty()) line += ",\"joints_rad\":" + nlohmann::json(request.joints_rad).dump();
   if (request.extrapolate) line += R"(,"extrapolate":true)";
+  if (request.q_sensor_marker)
+    line += R"(,"sensor_q":)" + quaternion_text(*request.q_sensor_marker);
   line += R"(,"status":)" + nlohmann::json(answer.status).dump();
   if (answer.code == ReplyCode::kOk) {
-    line += R"(,"robot_mm":)" + mm3_text(answer.robot_mm) +
-            R"(,"predicted_sd_mm":)" + format_reply_mm(answer.sd_mm);
+    line += R"(,"robot_mm":)" + mm3_text(answer.robot_mm) + R"(,"predicted_sd_mm":)" +
+            format_reply_number(answer.sd_mm);
+    if (answer.q_robot_marker) {
+      line += R"(,"robot_q":)" + quaternion_text(*answer.q_robot_marker) +
+              R"(,"predicted_angle_sd_mrad":)" + format_reply_number(1e3 * answer.angle_sd_rad);
+    }
   } else {
     line += fmt::format(R"(,"code":{},"reason":)", static_cast<int>(answer.code)) +
             nlohmann::json(answer.reason).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "line_protocol.hpp"
+#include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
+#include "vrreg/core/rotation.hpp"
 #include "vrreg/io/json_text.hpp"
 
 namespace vrreg::serve {
@@ -29,7 +32,7 @@ void read_point(const json& item, const std::string& where, PointRequest& out) {
   if (!item.is_object()) throw Refused{where + ": expected an object"};
   for (const auto& [key, value] : item.items()) {
     if (key != "model" && key != "sensor_mm" && key != "joints_rad" && key != "config" &&
-        key != "extrapolate" && key != "points") {
+        key != "extrapolate" && key != "points" && key != "sensor_q") {
       throw Refused{where + ": unknown key '" + key + "'"};
     }
   }
@@ -60,9 +63,29 @@ void read_point(const json& item, const std::string& where, PointRequest& out) {
     if (!e->is_boolean()) throw Refused{where + ".extrapolate: expected true or false"};
     out.extrapolate = e->get<bool>();
   }
+  if (const auto q = item.find("sensor_q"); q != item.end()) {
+    if (!q->is_array() || q->size() != 4) {
+      throw Refused{where + ".sensor_q: expected the marker's orientation [qx, qy, qz, qw]"};
+    }
+    Eigen::Vector4d xyzw;
+    for (int k = 0; k < 4; ++k) {
+      xyzw(k) = number_at((*q)[static_cast<std::size_t>(k)], where + ".sensor_q");
+    }
+    try {
+      out.q_sensor_marker = unit_quaternion(xyzw, (where + ".sensor_q").c_str());
+    } catch (const InputError& e) {
+      throw Refused{e.what()};
+    }
+    out.orientation_form = OrientationForm::kQuaternion;
+  }
 }
 
 json mm3_json(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json quaternion_json(const Eigen::Quaterniond& q) {
+  const Eigen::VectorXd xyzw = orientation_in(q, OrientationForm::kQuaternion);
+  return json::array({xyzw(0), xyzw(1), xyzw(2), xyzw(3)});
+}
 
 json answer_object(const PointAnswer& a) {
   json j;
@@ -72,6 +95,12 @@ json answer_object(const PointAnswer& a) {
     j["robot_mm"] = mm3_json(a.robot_mm);
     j["uncorrected_robot_mm"] = mm3_json(a.uncorrected_robot_mm);
     j["predicted_sd_mm"] = a.sd_mm;
+    if (a.q_robot_marker) {
+      j["robot_q"] = quaternion_json(*a.q_robot_marker);
+      j["uncorrected_robot_q"] = quaternion_json(a.uncorrected_q_robot_marker.value());
+      j["rotation_applied_mrad"] = mm3_json(1e3 * a.rotation_applied_rad);
+      j["predicted_angle_sd_mrad"] = 1e3 * a.angle_sd_rad;
+    }
   } else {
     j["error"] = a.reason;
     if (a.code == ReplyCode::kNotCorrectable) j["uncorrected_robot_mm"] = mm3_json(a.uncorrected_robot_mm);
@@ -183,6 +212,7 @@ std::string health_json(const std::vector<std::shared_ptr<const ServedModel>>& m
     m["method"] = id.method;
     m["n_fiducials"] = id.n_fiducials;
     m["predicts_sd"] = id.predicts_sd;
+    m["corrects_orientation"] = id.corrects_orientation;
     if (i < reload_errors.size() && !reload_errors[i].empty()) m["last_reload_error"] = reload_errors[i];
     list.push_back(std::move(m));
   }

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <vector>
 
+#include "vrreg/core/check.hpp"
 #include "vrreg/core/format.hpp"
+#include "vrreg/core/rotation.hpp"
 
 namespace vrreg::serve {
 namespace {
@@ -39,9 +41,38 @@ bool equals_ignoring_case(std::string_view a, std::string_view b) {
          });
 }
 
+// The orientation keywords, the form each gives, and the bound on each number: a rotation vector
+// [rad] or angles [deg] beyond it are typing errors.
+struct OrientationKeyword {
+  std::string_view name;
+  OrientationForm form;
+  double max_abs;
+};
+constexpr OrientationKeyword kOrientationKeywords[] = {
+    {"rotvec", OrientationForm::kRotationVector, 100.0},
+    {"quat", OrientationForm::kQuaternion, 2.0},
+    {"abc", OrientationForm::kKukaAbc, 720.0},
+};
+
+const OrientationKeyword* orientation_keyword(std::string_view field) {
+  for (const OrientationKeyword& k : kOrientationKeywords) {
+    if (equals_ignoring_case(field, k.name)) return &k;
+  }
+  return nullptr;
+}
+
 bool is_keyword(std::string_view field) {
   return equals_ignoring_case(field, "config") || equals_ignoring_case(field, "joints") ||
-         equals_ignoring_case(field, "extrapolate");
+         equals_ignoring_case(field, "extrapolate") || orientation_keyword(field) != nullptr;
+}
+
+// The form the reply to a request takes: that of the first orientation keyword in it, also when
+// the request cannot be read, so that the client reads as many numbers as it expects.
+OrientationForm form_of(const std::vector<std::string_view>& fields) {
+  for (const std::string_view f : fields) {
+    if (const OrientationKeyword* k = orientation_keyword(f)) return k->form;
+  }
+  return OrientationForm::kNone;
 }
 
 bool valid_model_name(std::string_view name) {
@@ -72,6 +103,42 @@ std::string shown(std::string_view field) {
 
 BadRequest malformed(std::string reason) { return {ReplyCode::kMalformed, std::move(reason)}; }
 
+// The marker's orientation after its keyword, as a unit quaternion.
+std::optional<Eigen::Quaterniond> orientation_of(const OrientationKeyword& k,
+                                                 const std::vector<std::string_view>& fields,
+                                                 std::size_t& i, std::string& why) {
+  const int count = orientation_numbers(k.form);
+  Eigen::Vector4d v = Eigen::Vector4d::Zero();
+  for (int c = 0; c < count; ++c, ++i) {
+    const std::optional<double> x =
+        i < fields.size() ? number_of(fields[i]) : std::optional<double>();
+    if (!x || std::abs(*x) > k.max_abs) {
+      why = fmt::format("{} takes {} finite numbers (within {}){}", k.name, count, k.max_abs,
+                        i < fields.size() ? ", not '" + shown(fields[i]) + "'" : std::string());
+      return std::nullopt;
+    }
+    v(c) = *x;
+  }
+  switch (k.form) {
+    case OrientationForm::kRotationVector:
+      return Eigen::Quaterniond(rotation_exp(v.head<3>()));
+    case OrientationForm::kKukaAbc:
+      return Eigen::Quaterniond(rotation_from_kuka_abc_deg(v.head<3>()));
+    case OrientationForm::kQuaternion:
+      try {
+        return unit_quaternion(v, "quat");
+      } catch (const InputError& e) {
+        why = e.what();
+        return std::nullopt;
+      }
+    case OrientationForm::kNone:
+      break;
+  }
+  return std::nullopt;
+}
+
+LineRequest parse_fields(const std::vector<std::string_view>& fields);
+
 }  // namespace
 
 LineRequest parse_line_request(std::string_view line) {
@@ -83,6 +150,14 @@ LineRequest parse_line_request(std::string_view line) {
     if (static_cast<unsigned char>(c) >= 0x7f) return malformed("non-ASCII byte in the request");
   }
   const std::vector<std::string_view> fields = fields_of(line);
+  LineRequest request = parse_fields(fields);
+  if (auto* bad = std::get_if<BadRequest>(&request)) bad->form = form_of(fields);
+  return request;
+}
+
+namespace {
+
+LineRequest parse_fields(const std::vector<std::string_view>& fields) {
   if (fields.empty()) return malformed("empty request");
   if (equals_ignoring_case(fields[0], "auth")) {
     if (fields.size() != 2) return malformed("auth takes one token");
@@ -130,26 +205,66 @@ LineRequest parse_line_request(std::string_view line) {
         ++i;
       }
       if (request.joints_rad.empty()) return malformed("joints without values");
+    } else if (const OrientationKeyword* k = orientation_keyword(key);
+               k != nullptr && request.orientation_form == OrientationForm::kNone) {
+      std::string why;
+      request.q_sensor_marker = orientation_of(*k, fields, i, why);
+      if (!request.q_sensor_marker) return malformed(why);
+      request.orientation_form = k->form;
     } else {
       return malformed("unexpected '" + shown(key) +
-                       "' (after x y z: config <label>, joints <q_rad...>, extrapolate, once each)");
+                       "' (after x y z: config <label>, joints <q_rad...>, extrapolate, and one "
+                       "of rotvec/quat/abc, once each)");
     }
   }
   return request;
 }
 
-std::string format_reply_mm(double value_mm) {
-  std::string s = format_general(value_mm, 12);
-  if (s.find('e') != std::string::npos) s = format_fixed(value_mm, 15);
+}  // namespace
+
+std::string format_reply_number(double value) {
+  if (value == 0.0) value = 0.0;  // "-0" is no number a controller need know
+  std::string s = format_general(value, 12);
+  if (s.find('e') != std::string::npos) s = format_fixed(value, 15);
   return s;
 }
 
-std::string format_line_reply(const PointAnswer& answer) {
-  if (answer.code != ReplyCode::kOk) {
-    return fmt::format("(0,0,0,-{})\n", static_cast<int>(answer.code));
+Eigen::VectorXd orientation_in(const Eigen::Quaterniond& q, OrientationForm form) {
+  switch (form) {
+    case OrientationForm::kRotationVector:
+      return rotation_log(q.toRotationMatrix());
+    case OrientationForm::kKukaAbc:
+      return kuka_abc_deg(q.toRotationMatrix());
+    case OrientationForm::kQuaternion: {
+      // The sign with w >= 0 (q and -q are the same orientation): one answer for one point.
+      const Eigen::Quaterniond u = q.w() < 0.0 ? Eigen::Quaterniond(-q.coeffs()) : q;
+      return u.coeffs();
+    }
+    case OrientationForm::kNone:
+      break;
   }
-  return "(" + format_reply_mm(answer.robot_mm.x()) + "," + format_reply_mm(answer.robot_mm.y()) +
-         "," + format_reply_mm(answer.robot_mm.z()) + "," + format_reply_mm(answer.sd_mm) + ")\n";
+  return {};
+}
+
+std::string format_line_reply(const PointAnswer& answer, OrientationForm form) {
+  const int n_orientation = orientation_numbers(form);
+  if (answer.code != ReplyCode::kOk) {
+    std::string zeros = "0,0,0,";
+    for (int k = 0; k < n_orientation; ++k) zeros += "0,";
+    const int code = static_cast<int>(answer.code);
+    return n_orientation == 0 ? fmt::format("({}-{})\n", zeros, code)
+                              : fmt::format("({}-{},-{})\n", zeros, code, code);
+  }
+  std::string out = "(" + format_reply_number(answer.robot_mm.x()) + "," +
+                    format_reply_number(answer.robot_mm.y()) + "," +
+                    format_reply_number(answer.robot_mm.z()) + ",";
+  if (n_orientation > 0) {
+    const Eigen::VectorXd o = orientation_in(answer.q_robot_marker.value(), form);
+    for (Eigen::Index k = 0; k < o.size(); ++k) out += format_reply_number(o(k)) + ",";
+  }
+  out += format_reply_number(answer.sd_mm);
+  if (n_orientation > 0) out += "," + format_reply_number(1e3 * answer.angle_sd_rad);
+  return out + ")\n";
 }
 
 std::string line_auth_accepted() { return "(1)\n"; }

@@ -83,15 +83,18 @@ asio::awaitable<void> line_session(Service::Impl& service, tcp::socket socket) {
                            : format_line_reply(PointAnswer::refusal(ReplyCode::kUnauthorized, ""));
         close = !authorized;
       } else if (!authorized) {
-        reply = format_line_reply(PointAnswer::refusal(ReplyCode::kUnauthorized, ""));
+        const auto* point = std::get_if<PointRequest>(&request);
+        reply = format_line_reply(PointAnswer::refusal(ReplyCode::kUnauthorized, ""),
+                                  point ? point->orientation_form : OrientationForm::kNone);
         close = true;
       } else if (const auto* point = std::get_if<PointRequest>(&request)) {
         reply = format_line_reply(
-            service.answer(service.registry.find(point->model), *point, client, "line"));
+            service.answer(service.registry.find(point->model), *point, client, "line"),
+            point->orientation_form);
       } else {
         const auto& bad = std::get<BadRequest>(request);
         ++service.refusals;
-        reply = format_line_reply(PointAnswer::refusal(bad.code, bad.reason));
+        reply = format_line_reply(PointAnswer::refusal(bad.code, bad.reason), bad.form);
       }
       buffer.erase(0, n);
     }

@@ -19,6 +19,19 @@ const char* to_string(ReplyCode code) {
   return "internal error";
 }
 
+int orientation_numbers(OrientationForm form) {
+  switch (form) {
+    case OrientationForm::kNone:
+      return 0;
+    case OrientationForm::kQuaternion:
+      return 4;
+    case OrientationForm::kRotationVector:
+    case OrientationForm::kKukaAbc:
+      return 3;
+  }
+  return 0;
+}
+
 PointAnswer PointAnswer::refusal(ReplyCode code, std::string reason) {
   PointAnswer a;
   a.code = code;

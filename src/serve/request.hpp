@@ -3,11 +3,23 @@
 // What a client of the correction service asks and what it is answered, whatever the protocol
 // (the line protocol for robot controllers, HTTP/JSON for cell software; docs/serve.md).
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace vrreg::serve {
+
+/// How a request gives the marker's measured orientation, and its reply the corrected one.
+enum class OrientationForm {
+  kNone,            ///< a position only
+  kRotationVector,  ///< rx, ry, rz [rad]: the axis times the angle (a URScript pose's rotation)
+  kQuaternion,      ///< qx, qy, qz, qw
+  kKukaAbc,         ///< A, B, C [deg], R = Rz(A) Ry(B) Rx(C) (a KRL FRAME's orientation)
+};
+
+/// How many numbers an orientation of `form` takes (0, 3 or 4).
+int orientation_numbers(OrientationForm form);
 
 /// One point to correct.
 struct PointRequest {
@@ -16,6 +28,10 @@ struct PointRequest {
   std::optional<int> config;         ///< arm configuration label (Procedure 2 models)
   std::vector<double> joints_rad;    ///< commanded joints (the joint-space model) [rad]
   bool extrapolate = false;          ///< correct outside the support too (status "extrapolated")
+  /// The marker's measured orientation, sensor frame (a rigid-body marker; docs/orientation.md),
+  /// and the form it was given in, which the reply takes.
+  std::optional<Eigen::Quaterniond> q_sensor_marker;
+  OrientationForm orientation_form = OrientationForm::kNone;
 };
 
 /// Reply codes: 0 is an answer; every other code is a refusal the client must handle. On the line
@@ -44,6 +60,14 @@ struct PointAnswer {
   /// Predicted sd of the corrected point's 3D error [mm]; 0 when the method predicts none (the
   /// paper's stencils).
   double sd_mm = 0.0;
+  /// When the request gave an orientation: the orientation to command, robot frame, the
+  /// uncorrected R R_sensor_marker, the rotation applied (log, robot frame) [rad], and the
+  /// predicted sd of the corrected orientation's angle error [rad] (0 when the method predicts
+  /// none).
+  std::optional<Eigen::Quaterniond> q_robot_marker;
+  std::optional<Eigen::Quaterniond> uncorrected_q_robot_marker;
+  Eigen::Vector3d rotation_applied_rad = Eigen::Vector3d::Zero();
+  double angle_sd_rad = 0.0;
 
   static PointAnswer refusal(ReplyCode code, std::string reason);
 };

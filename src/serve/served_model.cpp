@@ -73,6 +73,16 @@ PointAnswer ServedModel::answer(const PointRequest& request) const {
       points.joints_rad = Eigen::Map<const Eigen::VectorXd>(
           request.joints_rad.data(), static_cast<Eigen::Index>(request.joints_rad.size()));
     }
+    if (request.q_sensor_marker) {
+      if (!corrector_.corrects_orientation()) {
+        return PointAnswer::refusal(
+            ReplyCode::kInput,
+            fmt::format("model '{}' corrects positions only (its fiducials carry no "
+                        "orientations): send the point without rotvec/quat/abc",
+                        identity_.name));
+      }
+      points.q_sensor_marker.push_back(*request.q_sensor_marker);
+    }
     const CorrectResult r = corrector_.correct(points, request.extrapolate);
     const TargetCorrection& c = r.correction;
     if (c.stencils.size() != 1) {
@@ -97,6 +107,29 @@ PointAnswer ServedModel::answer(const PointRequest& request) const {
     a.sd_mm = c.predicted_sd_m.size() > 0 ? units::m_to_mm(c.predicted_sd_m(0)) : 0.0;
     if (!a.robot_mm.allFinite() || !std::isfinite(a.sd_mm) || a.sd_mm < 0.0) {
       return PointAnswer::refusal(ReplyCode::kInternal, "the correction is not finite");
+    }
+    if (request.q_sensor_marker) {
+      if (!r.orientation || r.orientation->status.size() != 1) {
+        return PointAnswer::refusal(ReplyCode::kInternal, "the model answered no orientation");
+      }
+      const OrientationCorrection& o = *r.orientation;
+      const StencilStatus o_status = o.status.front();
+      if (o_status != StencilStatus::kOk && o_status != StencilStatus::kExtrapolated) {
+        PointAnswer refused = PointAnswer::refusal(
+            ReplyCode::kNotCorrectable,
+            fmt::format("{}: the orientation: {}", identity_.name, to_string(o_status)));
+        refused.status = to_string(o_status);
+        refused.uncorrected_robot_mm = a.uncorrected_robot_mm;
+        return refused;
+      }
+      a.q_robot_marker = Eigen::Quaterniond(o.corrected_R_robot_marker.front());
+      a.uncorrected_q_robot_marker = Eigen::Quaterniond(o.uncorrected_R_robot_marker.front());
+      a.rotation_applied_rad = o.corrections_robot_rad.col(0);
+      a.angle_sd_rad = o.predicted_sd_rad.size() > 0 ? o.predicted_sd_rad(0) : 0.0;
+      if (!a.q_robot_marker->coeffs().allFinite() || !a.rotation_applied_rad.allFinite() ||
+          !std::isfinite(a.angle_sd_rad) || a.angle_sd_rad < 0.0) {
+        return PointAnswer::refusal(ReplyCode::kInternal, "the orientation is not finite");
+      }
     }
     return a;
   } catch (const InputError& e) {
@@ -123,6 +156,7 @@ std::shared_ptr<const ServedModel> load_served_model(const std::string& name,
     PreparedCorrector corrector(std::move(model), CorrectOptions{});
     id.method = to_string(corrector.method());
     id.predicts_sd = corrector.predicts_sd();
+    id.corrects_orientation = corrector.corrects_orientation();
     auto served = std::make_shared<const ServedModel>(std::move(id), std::move(corrector));
     // The check: one of its own fiducials, where every method answers, must come out finite.
     const RegistrationModel& m = served->corrector().model();
@@ -132,6 +166,11 @@ std::shared_ptr<const ServedModel> load_served_model(const std::string& name,
     probe.joints_rad = m.fiducials.front().q_rad;
     if (m.fiducials.front().config) probe.config = m.fiducials.front().config;
     probe.extrapolate = true;
+    if (served->identity()
+            .corrects_orientation) {  // the orientation too, as the fiducial's measured one
+      probe.q_sensor_marker = m.fiducials.front().q_sensor_marker;
+      probe.orientation_form = OrientationForm::kQuaternion;
+    }
     const PointAnswer check = served->answer(probe);
     if (check.code == ReplyCode::kInternal) {
       throw FileError(path, 0, "the model does not correct its own fiducial: " + check.reason);

@@ -20,6 +20,7 @@ struct ModelIdentity {
   std::string method;          ///< the correction method that answers
   std::size_t n_fiducials = 0;
   bool predicts_sd = false;
+  bool corrects_orientation = false;  ///< requests may carry the marker's orientation
 };
 
 /// A loaded model: immutable, shared between the threads that answer with it.

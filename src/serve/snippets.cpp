@@ -3,11 +3,13 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cctype>
 #include <cmath>
+#include <vector>
 
-#include "vrreg/core/check.hpp"
 #include "vrreg/config.hpp"
+#include "vrreg/core/check.hpp"
 
 namespace vrreg::serve {
 
@@ -36,6 +38,42 @@ std::string urscript_request_line(const SnippetOptions& options, const std::stri
   return options.model + " " + x + " " + y + " " + z + "\n";
 }
 
+std::string urscript_pose_request_line(const SnippetOptions& options,
+                                       const std::array<std::string, 6>& pose) {
+  return options.model + " " + pose[0] + " " + pose[1] + " " + pose[2] + " rotvec " + pose[3] +
+         " " + pose[4] + " " + pose[5] + "\n";
+}
+
+namespace {
+
+// URScript's str_cat takes two arguments: the parts concatenated by nesting it.
+std::string str_cat_all(std::vector<std::string> parts) {
+  while (parts.size() > 1) {
+    std::vector<std::string> next;
+    for (std::size_t i = 0; i + 1 < parts.size(); i += 2) {
+      next.push_back("str_cat(" + parts[i] + ", " + parts[i + 1] + ")");
+    }
+    if (parts.size() % 2 == 1) next.push_back(parts.back());
+    parts = std::move(next);
+  }
+  return parts.front();
+}
+
+// The URScript expression of the request line for the list `p` (3 numbers, or 6 with "rotvec").
+std::string urscript_request_expression(const std::string& model, bool pose) {
+  std::vector<std::string> parts = {"\"" + model + " \"", "p_sensor_mm[0]", "\" \"",
+                                    "p_sensor_mm[1]",     "\" \"",          "p_sensor_mm[2]"};
+  if (pose) {
+    for (const char* more :
+         {"\" rotvec \"", "p_sensor_mm[3]", "\" \"", "p_sensor_mm[4]", "\" \"", "p_sensor_mm[5]"}) {
+      parts.push_back(more);
+    }
+  }
+  return str_cat_all(parts);
+}
+
+}  // namespace
+
 std::string urscript_client(const SnippetOptions& o) {
   o.validate();
   const std::string where = fmt::format("{}:{}", o.host, o.port);
@@ -54,36 +92,67 @@ std::string urscript_client(const SnippetOptions& o) {
   }
   return fmt::format(
       "# vrreg correction service client (vrreg {version}): model '{model}' at {where}.\n"
-      "# vrreg_correct(p_sensor_mm): p_sensor_mm = [x, y, z], the point the vision system measured,\n"
-      "# sensor frame, mm. Returns [x, y, z, sd]: the position to command, robot base frame, mm, and\n"
-      "# its predicted sd in mm (0 when the model's method predicts none). The program halts with a\n"
-      "# popup when the service cannot be reached, does not answer within {timeout} s, or refuses the\n"
-      "# point (outside the model's support, unknown model, ...): it never moves on a default.\n"
-      "def vrreg_correct(p_sensor_mm):\n"
+      "# Every function halts the program with a popup when the service cannot be reached, does\n"
+      "# not answer within {timeout} s, or refuses the request (outside the model's support,\n"
+      "# unknown model, ...): it never moves on a default.\n"
+      "#\n"
+      "# vrreg_correct(p_sensor_mm): p_sensor_mm = [x, y, z], the point the vision system "
+      "measured,\n"
+      "# sensor frame, mm. Returns [x, y, z, sd]: the position to command, robot base frame, mm, "
+      "and\n"
+      "# its predicted sd in mm (0 when the model's method predicts none).\n"
+      "#\n"
+      "# vrreg_correct_pose(p_sensor_mm): p_sensor_mm = [x, y, z, rx, ry, rz], the marker's pose "
+      "the\n"
+      "# vision system measured, sensor frame (mm; rotation vector, rad), for a model registered\n"
+      "# with rigid-body fiducials. Returns [x, y, z, rx, ry, rz, sd, sd_angle]: the pose to\n"
+      "# command, robot base frame (mm; rotation vector, rad), the position's predicted sd (mm) "
+      "and\n"
+      "# the orientation's (mrad), 0 when the method predicts none.\n"
+      "# vrreg_pose_m(r): that pose as a URScript pose in metres, for movel / movej.\n"
+      "def vrreg_ask(request, n):\n"
       "  if not socket_open(\"{host}\", {port}, \"vrreg\"):\n"
-      "    popup(\"vrreg: no correction service at {where}\", \"vrreg\", error=True, blocking=True)\n"
+      "    popup(\"vrreg: no correction service at {where}\", \"vrreg\", error=True, "
+      "blocking=True)\n"
       "    halt\n"
       "  end\n"
       "{auth}"
-      "  socket_send_line(str_cat(str_cat(str_cat(\"{model} \", p_sensor_mm[0]), str_cat(\" \", "
-      "p_sensor_mm[1])), str_cat(\" \", p_sensor_mm[2])), \"vrreg\")\n"
-      "  reply = socket_read_ascii_float(4, \"vrreg\", {timeout})\n"
+      "  socket_send_line(request, \"vrreg\")\n"
+      "  reply = socket_read_ascii_float(n, \"vrreg\", {timeout})\n"
       "  socket_close(\"vrreg\")\n"
-      "  if reply[0] != 4:\n"
+      "  if reply[0] != n:\n"
       "    popup(\"vrreg: no answer from the correction service at {where}\", \"vrreg\", "
       "error=True, blocking=True)\n"
       "    halt\n"
       "  end\n"
+      "  return reply\n"
+      "end\n"
+      "def vrreg_correct(p_sensor_mm):\n"
+      "  reply = vrreg_ask({point_request}, 4)\n"
       "  if reply[4] < 0:\n"
       "    popup(str_cat(\"vrreg: point refused, code \", -reply[4]), \"vrreg\", error=True, "
       "blocking=True)\n"
       "    halt\n"
       "  end\n"
       "  return [reply[1], reply[2], reply[3], reply[4]]\n"
+      "end\n"
+      "def vrreg_correct_pose(p_sensor_mm):\n"
+      "  reply = vrreg_ask({pose_request}, 8)\n"
+      "  if reply[7] < 0:\n"
+      "    popup(str_cat(\"vrreg: pose refused, code \", -reply[7]), \"vrreg\", error=True, "
+      "blocking=True)\n"
+      "    halt\n"
+      "  end\n"
+      "  return [reply[1], reply[2], reply[3], reply[4], reply[5], reply[6], reply[7], reply[8]]\n"
+      "end\n"
+      "def vrreg_pose_m(r):\n"
+      "  return p[r[0] / 1000, r[1] / 1000, r[2] / 1000, r[3], r[4], r[5]]\n"
       "end\n",
       fmt::arg("version", version()), fmt::arg("model", o.model), fmt::arg("where", where),
       fmt::arg("host", o.host), fmt::arg("port", o.port), fmt::arg("timeout", o.timeout_s),
-      fmt::arg("auth", auth));
+      fmt::arg("auth", auth),
+      fmt::arg("point_request", urscript_request_expression(o.model, false)),
+      fmt::arg("pose_request", urscript_request_expression(o.model, true)));
 }
 
 std::string krl_eki_config(const SnippetOptions& o) {
@@ -105,7 +174,7 @@ std::string krl_eki_config(const SnippetOptions& o) {
       "  </CONFIGURATION>\n"
       "  <RECEIVE>\n"
       "    <RAW>\n"
-      "      <ELEMENT Tag=\"Reply\" Type=\"STREAM\" EOS=\"10\" Size=\"128\" Set_Flag=\"998\"/>\n"
+      "      <ELEMENT Tag=\"Reply\" Type=\"STREAM\" EOS=\"10\" Size=\"256\" Set_Flag=\"998\"/>\n"
       "    </RAW>\n"
       "  </RECEIVE>\n"
       "  <SEND/>\n"
@@ -115,7 +184,18 @@ std::string krl_eki_config(const SnippetOptions& o) {
       fmt::arg("timeout_ms", static_cast<int>(std::lround(o.timeout_s * 1000))));
 }
 
-std::string krl_client(const SnippetOptions& o) {
+std::string krl_request_line(const SnippetOptions& options, const std::array<double, 6>& frame,
+                             bool pose) {
+  // SWRITE's "%.6f", as the KRL function formats X, Y, Z (and A, B, C).
+  std::string line =
+      fmt::format("{} {:.6f} {:.6f} {:.6f}", options.model, frame[0], frame[1], frame[2]);
+  if (pose) line += fmt::format(" abc {:.6f} {:.6f} {:.6f}", frame[3], frame[4], frame[5]);
+  return line + "\n";
+}
+
+namespace {
+
+std::string krl_function(const SnippetOptions& o, bool pose) {
   o.validate();
   std::string auth;
   if (!o.token.empty()) {
@@ -132,22 +212,58 @@ std::string krl_client(const SnippetOptions& o) {
         "  RET = EKI_GetString(\"vrreg\", \"Reply\", REP[])\n",
         o.token);
   }
+  const std::string name = pose ? "VRREG_CORRECT_POSE" : "VRREG_CORRECT";
+  const std::string signature = pose ? "P_SENSOR_MM:IN, P_ROBOT_MM:OUT, SD_MM:OUT, SD_MRAD:OUT"
+                                     : "P_SENSOR_MM:IN, P_ROBOT_MM:OUT, SD_MM:OUT";
+  const std::string what =
+      pose
+          ? "; the vision system measured the marker's pose P_SENSOR_MM, sensor frame (X, Y, Z "
+            "mm;\n"
+            "; A, B, C deg) for a model registered with rigid-body fiducials. Returns TRUE with\n"
+            "; P_ROBOT_MM (the pose to command, robot base frame: X, Y, Z mm; A, B, C deg), SD_MM\n"
+            "; (its position's predicted sd, mm) and SD_MRAD (its orientation's, mrad; both 0 "
+            "when\n"
+            "; the method predicts none). Returns FALSE, P_ROBOT_MM untouched, when the service\n"
+          : "; P_SENSOR_MM: the point the vision system measured, sensor frame, mm (X, Y, Z).\n"
+            "; Returns TRUE with P_ROBOT_MM (the position to command, robot base frame, mm) and\n"
+            "; SD_MM (its predicted sd, mm; 0 when the method predicts none). Returns FALSE,\n"
+            "; P_ROBOT_MM untouched, when the service\n";
+  const std::string send =
+      pose ? "  SWRITE(REQ[], STAT, OFS, \"" + o.model +
+                 " %.6f %.6f %.6f abc %.6f %.6f %.6f%c\", P_SENSOR_MM.X, P_SENSOR_MM.Y, "
+                 "P_SENSOR_MM.Z, P_SENSOR_MM.A, P_SENSOR_MM.B, P_SENSOR_MM.C, 10)\n"
+           : "  SWRITE(REQ[], STAT, OFS, \"" + o.model +
+                 " %.6f %.6f %.6f%c\", P_SENSOR_MM.X, P_SENSOR_MM.Y, P_SENSOR_MM.Z, 10)\n";
+  const std::string read =
+      pose ? "  SREAD(REP[], STAT, OFS, \"(%r,%r,%r,%r,%r,%r,%r,%r)\", X, Y, Z, A, B, C, SD, "
+             "SD_ANGLE)\n"
+           : "  SREAD(REP[], STAT, OFS, \"(%r,%r,%r,%r)\", X, Y, Z, SD)\n";
+  const std::string out = pose ? "  SD_MRAD = SD_ANGLE\n"
+                                 "  P_ROBOT_MM = P_SENSOR_MM\n"
+                                 "  P_ROBOT_MM.X = X\n"
+                                 "  P_ROBOT_MM.Y = Y\n"
+                                 "  P_ROBOT_MM.Z = Z\n"
+                                 "  P_ROBOT_MM.A = A\n"
+                                 "  P_ROBOT_MM.B = B\n"
+                                 "  P_ROBOT_MM.C = C\n"
+                               : "  P_ROBOT_MM = P_SENSOR_MM\n"
+                                 "  P_ROBOT_MM.X = X\n"
+                                 "  P_ROBOT_MM.Y = Y\n"
+                                 "  P_ROBOT_MM.Z = Z\n";
   return fmt::format(
       "&ACCESS RVP\n"
-      "DEFFCT BOOL VRREG_CORRECT(P_SENSOR_MM:IN, P_ROBOT_MM:OUT, SD_MM:OUT)\n"
+      "DEFFCT BOOL {name}({signature})\n"
       "; vrreg correction service client (vrreg {version}): model '{model}' at {where}, over\n"
-      "; EthernetKRL (configuration vrreg.xml, written beside this file). P_SENSOR_MM: the point\n"
-      "; the vision system measured, sensor frame, mm (X, Y, Z). Returns TRUE with P_ROBOT_MM (the\n"
-      "; position to command, robot base frame, mm) and SD_MM (its predicted sd, mm; 0 when the\n"
-      "; method predicts none). Returns FALSE, P_ROBOT_MM untouched, when the service does not\n"
-      "; answer within {timeout} s or refuses the point (SD_MM is then minus the refusal code):\n"
-      "; the caller must stop, never move on a default.\n"
+      "; EthernetKRL (configuration vrreg.xml, written beside this file).\n"
+      "{what}"
+      "; does not answer within {timeout} s or refuses the request (SD_MM is then minus the\n"
+      "; refusal code): the caller must stop, never move on a default.\n"
       "  DECL FRAME P_SENSOR_MM, P_ROBOT_MM\n"
-      "  DECL REAL SD_MM, X, Y, Z, SD\n"
+      "  DECL REAL SD_MM{sd_mrad_decl}, X, Y, Z, {abc_decl}SD\n"
       "  DECL EKI_STATUS RET\n"
       "  DECL STATE_T STAT\n"
       "  DECL INT OFS\n"
-      "  DECL CHAR REQ[128], REP[128]\n"
+      "  DECL CHAR REQ[256], REP[256]\n"
       "  RET = EKI_Init(\"vrreg\")\n"
       "  RET = EKI_Open(\"vrreg\")\n"
       "  $FLAG[998] = FALSE\n"
@@ -155,8 +271,7 @@ std::string krl_client(const SnippetOptions& o) {
       "  $TIMER_STOP[8] = FALSE\n"
       "{auth}"
       "  OFS = 0\n"
-      "  SWRITE(REQ[], STAT, OFS, \"{model} %.6f %.6f %.6f%c\", P_SENSOR_MM.X, P_SENSOR_MM.Y, "
-      "P_SENSOR_MM.Z, 10)\n"
+      "{send}"
       "  RET = EKI_Send(\"vrreg\", REQ[])\n"
       "  WAIT FOR $FLAG[998] OR $TIMER_FLAG[8]\n"
       "  $TIMER_STOP[8] = TRUE\n"
@@ -169,7 +284,7 @@ std::string krl_client(const SnippetOptions& o) {
       "  RET = EKI_Close(\"vrreg\")\n"
       "  RET = EKI_Clear(\"vrreg\")\n"
       "  OFS = 0\n"
-      "  SREAD(REP[], STAT, OFS, \"(%r,%r,%r,%r)\", X, Y, Z, SD)\n"
+      "{read}"
       "  IF STAT.RET1 <> #CMD_OK THEN\n"
       "    RETURN FALSE\n"
       "  ENDIF\n"
@@ -177,16 +292,22 @@ std::string krl_client(const SnippetOptions& o) {
       "  IF SD < 0 THEN\n"
       "    RETURN FALSE\n"
       "  ENDIF\n"
-      "  P_ROBOT_MM = P_SENSOR_MM\n"
-      "  P_ROBOT_MM.X = X\n"
-      "  P_ROBOT_MM.Y = Y\n"
-      "  P_ROBOT_MM.Z = Z\n"
+      "{out}"
       "  RETURN TRUE\n"
       "ENDFCT\n",
+      fmt::arg("name", name), fmt::arg("signature", signature), fmt::arg("what", what),
       fmt::arg("version", version()), fmt::arg("model", o.model),
       fmt::arg("where", fmt::format("{}:{}", o.host, o.port)), fmt::arg("timeout", o.timeout_s),
       fmt::arg("timeout_ms", static_cast<int>(std::lround(o.timeout_s * 1000))),
-      fmt::arg("auth", auth));
+      fmt::arg("auth", auth), fmt::arg("send", send), fmt::arg("read", read), fmt::arg("out", out),
+      fmt::arg("sd_mrad_decl", pose ? ", SD_MRAD" : ""),
+      fmt::arg("abc_decl", pose ? "A, B, C, SD_ANGLE, " : ""));
 }
+
+}  // namespace
+
+std::string krl_client(const SnippetOptions& o) { return krl_function(o, false); }
+
+std::string krl_pose_client(const SnippetOptions& o) { return krl_function(o, true); }
 
 }  // namespace vrreg::serve

@@ -2,6 +2,7 @@
 #pragma once
 // Robot-side clients of the line protocol: the function a robot program calls to have a point
 // corrected by `vrreg serve` (URScript for Universal Robots, KRL with EthernetKRL for KUKA).
+#include <array>
 #include <string>
 
 namespace vrreg::serve {
@@ -17,18 +18,30 @@ struct SnippetOptions {
   void validate() const;
 };
 
-/// URScript: `vrreg_correct(p_sensor_mm)` -> [x_mm, y_mm, z_mm, sd_mm], robot base frame; halts
-/// with a popup when the service is unreachable, silent, or refuses the point.
+/// URScript: `vrreg_correct(p_sensor_mm)` -> [x_mm, y_mm, z_mm, sd_mm], robot base frame, and
+/// `vrreg_correct_pose([x, y, z, rx, ry, rz])` -> the pose to command (mm, rotation vector [rad])
+/// with the position's sd [mm] and the orientation's [mrad]; both halt with a popup when the
+/// service is unreachable, silent, or refuses the request.
 std::string urscript_client(const SnippetOptions& options);
 
-/// The request line the URScript function sends for a point, as URScript's str_cat writes numbers
+/// The request lines the URScript functions send, numbers as URScript's str_cat writes them
 /// (what the tests send to the service to check the snippet's bytes).
 std::string urscript_request_line(const SnippetOptions& options, const std::string& x,
                                   const std::string& y, const std::string& z);
+std::string urscript_pose_request_line(const SnippetOptions& options,
+                                       const std::array<std::string, 6>& pose);
 
 /// KRL: `VRREG_CORRECT(P_SENSOR_MM, P_ROBOT_MM, SD_MM)` (a DEFFCT returning TRUE on an answer)
 /// over EthernetKRL, and its EKI configuration (XML) for the controller's Config/User/Common/EthernetKRL.
 std::string krl_client(const SnippetOptions& options);
+/// KRL: `VRREG_CORRECT_POSE(P_SENSOR_MM, P_ROBOT_MM, SD_MM, SD_MRAD)`: the whole FRAME (X, Y, Z
+/// mm; A, B, C deg), for models registered with rigid-body fiducials.
+std::string krl_pose_client(const SnippetOptions& options);
 std::string krl_eki_config(const SnippetOptions& options);
+
+/// The request line the KRL function sends for FRAME `frame` (X, Y, Z, A, B, C; A, B, C used
+/// when `pose`), numbers as its SWRITE "%.6f" writes them.
+std::string krl_request_line(const SnippetOptions& options, const std::array<double, 6>& frame,
+                             bool pose);
 
 }  // namespace vrreg::serve

@@ -97,5 +97,26 @@ TEST(OrientationCli, BadQuaternionColumnsAreOneLineErrors) {
       << alone.err;
 }
 
+TEST(OrientationCli, SnippetsWriteThePoseFunctions) {
+  const fs::path dir = fresh_dir("orientation_cli_snippet");
+  const auto path = [&dir](const char* name) { return (dir / name).string(); };
+  const CliResult krl =
+      run_vrreg("snippet krl --pose --model cell --connect 10.0.0.2:30401 -o " +
+                path("VRREG_CORRECT_POSE.src") + " --eki-config " + path("vrreg.xml"));
+  ASSERT_EQ(krl.status, 0) << krl.err;
+  const std::string program = read_text(dir / "VRREG_CORRECT_POSE.src");
+  EXPECT_NE(program.find("DEFFCT BOOL VRREG_CORRECT_POSE("), std::string::npos);
+  EXPECT_NE(program.find("abc %.6f %.6f %.6f"), std::string::npos);
+  EXPECT_NE(read_text(dir / "vrreg.xml").find("<IP>10.0.0.2</IP>"), std::string::npos);
+  const CliResult ur = run_vrreg("snippet urscript --model cell -o " + path("vrreg.script"));
+  ASSERT_EQ(ur.status, 0) << ur.err;
+  EXPECT_NE(read_text(dir / "vrreg.script").find("def vrreg_correct_pose(p_sensor_mm):"),
+            std::string::npos);
+  const CliResult wrong = run_vrreg("snippet urscript --pose --model cell -o " + path("x.script"));
+  EXPECT_NE(wrong.status, 0);
+  EXPECT_NE(wrong.err.find("--pose: for krl only"), std::string::npos) << wrong.err;
+  EXPECT_FALSE(fs::exists(dir / "x.script"));
+}
+
 }  // namespace
 }  // namespace vrreg::testing

@@ -66,5 +66,65 @@ TEST(Rotation, QuaternionMeanAndSpreadMatchTheReadings) {
   EXPECT_NEAR(m.sq_dev_rad2, 4 * a * a, 1e-12);
 }
 
+TEST(Rotation, KukaAbcIsZThenYThenXInDegrees) {
+  // Closed forms: A turns about z, B about y, C about x; A = 90 takes x to y.
+  EXPECT_LT(
+      (rotation_from_kuka_abc_deg({90, 0, 0}) * Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitY())
+          .norm(),
+      1e-15);
+  EXPECT_LT(
+      (rotation_from_kuka_abc_deg({0, 90, 0}) * Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitX())
+          .norm(),
+      1e-15);
+  EXPECT_LT(
+      (rotation_from_kuka_abc_deg({0, 0, 90}) * Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitZ())
+          .norm(),
+      1e-15);
+  // Composition order: Rz(A) Ry(B) Rx(C), the intrinsic z, y', x'' of KUKA's FRAME.
+  const Eigen::Matrix3d R = rotation_from_kuka_abc_deg({30, -20, 110});
+  const Eigen::Matrix3d expected = (Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(-M_PI / 9, Eigen::Vector3d::UnitY()) *
+                                    Eigen::AngleAxisd(110 * M_PI / 180, Eigen::Vector3d::UnitX()))
+                                       .toRotationMatrix();
+  EXPECT_LT((R - expected).cwiseAbs().maxCoeff(), 1e-15);
+  const Eigen::Vector3d abc = kuka_abc_deg(R);
+  EXPECT_NEAR(abc(0), 30, 1e-12);
+  EXPECT_NEAR(abc(1), -20, 1e-12);
+  EXPECT_NEAR(abc(2), 110, 1e-12);
+}
+
+TEST(Rotation, KukaAbcRoundTripsEveryRotationAndTheGimbalLock) {
+  Random rng(5);
+  for (int i = 0; i < 2000; ++i) {
+    const Eigen::Matrix3d R = rng.rotation();
+    const Eigen::Vector3d abc = kuka_abc_deg(R);
+    EXPECT_LE(std::abs(abc(1)), 90.0);
+    EXPECT_LE(std::abs(abc(0)), 180.0);
+    EXPECT_LE(std::abs(abc(2)), 180.0);
+    EXPECT_LT(rotation_angle_rad(rotation_from_kuka_abc_deg(abc), R), 1e-14) << i;
+  }
+  for (const double b : {90.0, -90.0}) {  // only A +- C defined: C = 0, the same rotation
+    const Eigen::Matrix3d R = rotation_from_kuka_abc_deg({40, b, -25});
+    const Eigen::Vector3d abc = kuka_abc_deg(R);
+    EXPECT_EQ(abc(2), 0.0);
+    EXPECT_LT(rotation_angle_rad(rotation_from_kuka_abc_deg(abc), R), 1e-12) << b;
+  }
+}
+
+TEST(Rotation, UnitQuaternionKeepsUnitBitsNormalisesNearlyUnitAndRefusesTheRest) {
+  const Eigen::Quaterniond q(rotation_exp(Eigen::Vector3d(0.3, -1.2, 0.4)));
+  EXPECT_EQ(unit_quaternion(q.coeffs(), "q").coeffs(), q.coeffs());
+  const Eigen::Quaterniond scaled = unit_quaternion(1.0005 * q.coeffs(), "q");
+  EXPECT_NEAR(scaled.norm(), 1.0, 1e-15);
+  EXPECT_LT(scaled.angularDistance(q), 1e-15);
+  EXPECT_THROW((void)unit_quaternion(1.01 * q.coeffs(), "q"), InputError);
+  EXPECT_THROW((void)unit_quaternion(Eigen::Vector4d(0, 0, std::nan(""), 1), "q"), InputError);
+  try {
+    (void)unit_quaternion(Eigen::Vector4d(1, 1, 1, 1), "row 7");
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("row 7"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace vrreg

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "orientation_cell.hpp"
 #include "vrreg/core/file_error.hpp"
 #include "vrreg/core/random.hpp"
 #include "vrreg/core/rotation.hpp"
@@ -17,39 +18,7 @@
 namespace vrreg::io {
 namespace {
 
-// A 5 x 5 x 5 grid at 40 mm read by a rotated sensor; the marker misses its commanded orientation
-// by a smooth field of a few mrad; targets at the cell centres.
-MeasurementSet cell_with_orientations() {
-  Random rng(31);
-  const RigidTransform T_sensor_robot(rotation_exp(Eigen::Vector3d(0.2, -0.5, 1.0)),
-                                      Eigen::Vector3d(0.1, 0.3, 2.0));
-  MeasurementSet set;
-  set.source = "cell.csv";
-  for (int i = 0; i < 5; ++i)
-    for (int j = 0; j < 5; ++j)
-      for (int k = 0; k < 5; ++k)
-        for (const bool target : {false, true}) {
-          if (target && (i == 4 || j == 4 || k == 4)) continue;
-          Location l;
-          l.point = (target ? "t" : "f") + std::to_string(25 * i + 5 * j + k);
-          l.role = target ? Role::kTarget : Role::kFiducial;
-          l.robot_m = Eigen::Vector3d(0.4, -0.1, 0.1) + 0.04 * Eigen::Vector3d(i, j, k) +
-                      (target ? Eigen::Vector3d::Constant(0.02) : Eigen::Vector3d::Zero());
-          l.sensor_m = T_sensor_robot.apply(l.robot_m + rng.normal3(2e-5));
-          l.n_readings = 4;
-          l.sensor_sq_dev_m2 = Eigen::Vector3d::Constant(3 * 4e-10);
-          const Eigen::Matrix3d commanded = rng.rotation();
-          const Eigen::Vector3d error_rad(3e-3 * std::sin(8 * l.robot_m.x()),
-                                          2e-3 * std::cos(6 * l.robot_m.y()), 1e-3);
-          const Eigen::Matrix3d actual = rotation_exp(error_rad + rng.normal3(1e-4)) * commanded;
-          l.q_robot_marker = Eigen::Quaterniond(commanded);
-          l.q_sensor_marker = Eigen::Quaterniond(T_sensor_robot.rotation * actual);
-          l.orientation_sq_dev_rad2 = 3 * 3 * 1e-8;
-          l.source_line = set.locations.size() + 2;
-          set.locations.push_back(l);
-        }
-  return set;
-}
+using vrreg::testing::cell_with_orientations;
 
 TEST(ModelOrientation, FieldAndFiducialOrientationsRoundTripToTheBit) {
   const MeasurementSet set = cell_with_orientations();

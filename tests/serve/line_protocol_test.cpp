@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "serve/http_api.hpp"
 
 namespace vrreg::serve {
@@ -38,6 +40,57 @@ TEST(LineProtocol, RepliesAsSocketReadAsciiFloatReads) {
   EXPECT_EQ(format_line_reply(a), "(412.123456789,-90,0.000000100000000,0.0421)\n");
   EXPECT_EQ(format_line_reply(PointAnswer::refusal(ReplyCode::kNotCorrectable, "x")), "(0,0,0,-3)\n");
   EXPECT_EQ(line_auth_accepted(), "(1)\n");
+}
+
+TEST(LineProtocol, ReadsTheMarkersOrientationInThreeForms) {
+  const auto q_of = [](const std::string& line) {
+    const LineRequest r = parse_line_request(line);
+    EXPECT_TRUE(std::holds_alternative<PointRequest>(r)) << line;
+    return std::get<PointRequest>(r);
+  };
+  // A quarter turn about z, three ways: the same unit quaternion.
+  const double s = std::sqrt(0.5);
+  const PointRequest quat = q_of("cell 1 2 3 quat 0 0 0.70710678118654757 0.70710678118654757");
+  const PointRequest rotvec = q_of("cell 1 2 3 ROTVEC 0,0,1.5707963267948966 extrapolate");
+  const PointRequest abc = q_of("cell 1 2 3 joints 0.1 0.2 abc 90 0 0");
+  EXPECT_EQ(quat.orientation_form, OrientationForm::kQuaternion);
+  EXPECT_EQ(rotvec.orientation_form, OrientationForm::kRotationVector);
+  EXPECT_EQ(abc.orientation_form, OrientationForm::kKukaAbc);
+  EXPECT_EQ(abc.joints_rad.size(), 2u);
+  EXPECT_TRUE(rotvec.extrapolate);
+  for (const PointRequest* r : {&quat, &rotvec, &abc}) {
+    ASSERT_TRUE(r->q_sensor_marker.has_value());
+    EXPECT_LT(r->q_sensor_marker->angularDistance(Eigen::Quaterniond(s, 0, 0, s)), 1e-15);
+  }
+  EXPECT_FALSE(q_of("cell 1 2 3").q_sensor_marker.has_value());
+  for (const std::string& line : std::vector<std::string>{
+           "cell 1 2 3 rotvec", "cell 1 2 3 rotvec 1 2", "cell 1 2 3 rotvec 1 2 x",
+           "cell 1 2 3 rotvec 1 2 1000", "cell 1 2 3 quat 0 0 0 2", "cell 1 2 3 quat 0 0 0",
+           "cell 1 2 3 abc 0 0 nan", "cell 1 2 3 abc 0 0 0 quat 0 0 0 1",
+           "cell 1 2 3 rotvec 0 0 0 rotvec 0 0 0"}) {
+    const LineRequest r = parse_line_request(line);
+    ASSERT_TRUE(std::holds_alternative<BadRequest>(r)) << line;
+    EXPECT_NE(std::get<BadRequest>(r).form, OrientationForm::kNone) << line;
+  }
+}
+
+TEST(LineProtocol, RepliesWithTheOrientationInTheRequestsForm) {
+  PointAnswer a;
+  a.robot_mm = Eigen::Vector3d(412.5, -90.0, 310.0);
+  a.sd_mm = 0.0421;
+  a.angle_sd_rad = 0.00061;
+  a.q_robot_marker = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  EXPECT_EQ(format_line_reply(a, OrientationForm::kRotationVector),
+            "(412.5,-90,310,0,0,1.57079632679,0.0421,0.61)\n");
+  EXPECT_EQ(format_line_reply(a, OrientationForm::kKukaAbc),
+            "(412.5,-90,310,90,0,0,0.0421,0.61)\n");
+  a.q_robot_marker->coeffs() *= -1.0;  // the same orientation: answered with w >= 0
+  EXPECT_EQ(format_line_reply(a, OrientationForm::kQuaternion),
+            "(412.5,-90,310,0,0,0.707106781187,0.707106781187,0.0421,0.61)\n");
+  EXPECT_EQ(format_line_reply(a), "(412.5,-90,310,0.0421)\n");
+  const PointAnswer refused = PointAnswer::refusal(ReplyCode::kInput, "x");
+  EXPECT_EQ(format_line_reply(refused, OrientationForm::kKukaAbc), "(0,0,0,0,0,0,-4,-4)\n");
+  EXPECT_EQ(format_line_reply(refused, OrientationForm::kQuaternion), "(0,0,0,0,0,0,0,-4,-4)\n");
 }
 
 TEST(HttpApi, ReadsOnePointOrABatchAndRefusesTheRest) {

@@ -218,10 +218,10 @@ TEST(Service, HttpAnswersAsTheLineProtocolAndBatches) {
       continue;
     }
     const auto& r = results[i]["robot_mm"];
-    const std::string from_json = "(" + format_reply_mm(r[0].get<double>()) + "," +
-                                  format_reply_mm(r[1].get<double>()) + "," +
-                                  format_reply_mm(r[2].get<double>()) + "," +
-                                  format_reply_mm(results[i]["predicted_sd_mm"].get<double>()) + ")\n";
+    const std::string from_json =
+        "(" + format_reply_number(r[0].get<double>()) + "," +
+        format_reply_number(r[1].get<double>()) + "," + format_reply_number(r[2].get<double>()) +
+        "," + format_reply_number(results[i]["predicted_sd_mm"].get<double>()) + ")\n";
     EXPECT_EQ(from_json, line);
   }
   const std::string single = http_request(
@@ -325,8 +325,8 @@ TEST(Service, UrscriptSnippetBytesAreAnswered) {
   s.token = o.token;
   const std::string program = urscript_client(s);
   EXPECT_THAT(program, HasSubstr("def vrreg_correct(p_sensor_mm):"));
-  EXPECT_THAT(program, HasSubstr("socket_read_ascii_float(4, \"vrreg\", 2)"));
-  EXPECT_THAT(program, HasSubstr("if reply[4] < 0:"));
+  EXPECT_THAT(program, HasSubstr("socket_read_ascii_float(n, \"vrreg\", 2)"));
+  EXPECT_THAT(program, HasSubstr(", 4)\n  if reply[4] < 0:"));
   // The bytes URScript sends: socket_send_line appends "\r\n"? The manual says a newline; both
   // are answered. str_cat writes a float as URScript prints it, e.g. "412.5" or "-90".
   LineClient c(service.line_port());

@@ -23,6 +23,26 @@ double rotation_angle_rad(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b);
 /// pi/2 of one another. Throws InputError when `rotations` is empty or not finite.
 Eigen::Matrix3d rotation_mean(std::span<const Eigen::Matrix3d> rotations);
 
+/// How far from 1 a given quaternion's norm may be (rounded or single-precision input) before it
+/// is refused rather than normalised.
+inline constexpr double kUnitQuaternionTolerance = 1e-3;
+
+/// Below this a quaternion's distance from norm 1 is rounding: it is used as given.
+inline constexpr double kUnitQuaternionRounding = 1e-12;
+
+/// The unit quaternion of coefficients `xyzw` (x, y, z, w), normalised (kept as given when unit
+/// to kUnitQuaternionRounding). Throws InputError naming `what` when they are not finite or
+/// their norm is not within kUnitQuaternionTolerance of 1.
+Eigen::Quaterniond unit_quaternion(const Eigen::Vector4d& xyzw, const char* what);
+
+/// KUKA's orientation angles of R: A, B, C [deg] with R = Rz(A) Ry(B) Rx(C) (a KRL FRAME or POS),
+/// A and C in (-180, 180], B in [-90, 90]. At B = +-90 deg (A and C turn about the same axis) C is
+/// set to 0 and A carries the turn.
+Eigen::Vector3d kuka_abc_deg(const Eigen::Matrix3d& rotation);
+
+/// R = Rz(A) Ry(B) Rx(C) from KUKA's A, B, C [deg].
+Eigen::Matrix3d rotation_from_kuka_abc_deg(const Eigen::Vector3d& abc_deg);
+
 /// The mean of n unit quaternions q_r and their spread.
 struct QuaternionMean {
   Eigen::Quaterniond mean{Eigen::Quaterniond::Identity()};

@@ -2,6 +2,7 @@
 #pragma once
 // The front door's input: locations measured in both frames, as arrays (one column a location).
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,12 @@ struct MeasuredPoints {
   /// deviations [m^2] (for sigma_opt, Eq. 9); both empty when unknown.
   Eigen::VectorXi n_readings{};
   Points3 sensor_sq_dev_m2{};
+  /// Rigid-body markers (docs/orientation.md): the measured orientation of each location's
+  /// marker, sensor frame, and the commanded one, robot frame; unit quaternions (norms within
+  /// kUnitQuaternionTolerance of 1, normalised when used). Fiducials with both get an orientation
+  /// field; points with a measured one get their orientation corrected. Empty: none.
+  std::vector<Eigen::Quaterniond> q_sensor_marker{};
+  std::vector<Eigen::Quaterniond> q_robot_marker{};
 
   [[nodiscard]] Eigen::Index size() const { return sensor_m.cols(); }
   /// Throws InputError naming the member when sizes disagree or a value is not finite.

@@ -16,7 +16,8 @@ class PreparedCorrector {
   /// as correct() does when the method cannot be used on the model's fiducials).
   PreparedCorrector(std::shared_ptr<const RegistrationModel> model, CorrectOptions options);
 
-  /// Paper Eq. 7, 8 then {R, tau} for points given as arrays [m] (see correct()).
+  /// Paper Eq. 7, 8 then {R, tau} for points given as arrays [m] (see correct()); their
+  /// orientations too when they carry them (throws InputError when the model cannot correct them).
   [[nodiscard]] CorrectResult correct(const MeasuredPoints& points) const;
   /// The same with `extrapolate` set for this call only (CorrectOptions::extrapolate).
   [[nodiscard]] CorrectResult correct(const MeasuredPoints& points, bool extrapolate) const;
@@ -29,6 +30,11 @@ class PreparedCorrector {
   [[nodiscard]] int joints_needed() const;
   /// Whether the method states a predicted sd per point (field models do, the paper's stencils not).
   [[nodiscard]] bool predicts_sd() const;
+  /// Whether points' orientations (MeasuredPoints::q_sensor_marker) are corrected too: the model's
+  /// fiducials carry measured and commanded orientations (docs/orientation.md).
+  [[nodiscard]] bool corrects_orientation() const;
+  /// Whether the orientation field states a predicted angle sd per point.
+  [[nodiscard]] bool predicts_angle_sd() const;
 
  private:
   std::shared_ptr<const RegistrationModel> model_{};
@@ -36,9 +42,13 @@ class PreparedCorrector {
   /// Null when the points follow the set's way (Procedure 2 strategies, configuration labels,
   /// marker offsets): each call then chooses per point as correct() does.
   std::shared_ptr<const Corrector> corrector_{};
+  /// The orientation field answering with corrector_ (null without fiducial orientations).
+  std::shared_ptr<const OrientationCorrector> orientation_{};
   InterpolationMethod method_ = InterpolationMethod::kLinear;
   int joints_needed_ = 0;
   bool predicts_sd_ = false;
+  bool corrects_orientation_ = false;
+  bool predicts_angle_sd_ = false;
 };
 
 }  // namespace vrreg
