@@ -2,6 +2,7 @@
 #include "joint_rotation.hpp"
 
 #include <Eigen/QR>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -18,11 +19,24 @@ namespace {
 constexpr int kDegrees[] = {-1, 0, 1, 2, 4, 6, 8};
 constexpr double kRelativeRankTolerance = 1e-9;
 
-// The design rows d g / d c of one fiducial (3 x n (degree + 1)).
-void design_rows(const kinematics::SerialChain& chain, const JointRotationTerms& m,
+// The model's columns: n (degree + 1) joint-function columns, then 3 per link frame when the
+// links' rotations are fitted.
+Eigen::Index n_columns(const JointRotationTerms& m, int n_joints, bool links) {
+  return n_joints * (m.degree + 1) + (links ? 3 * n_joints : 0);
+}
+
+// The design rows d g / d c of one fiducial (3 x n_columns).
+void design_rows(const kinematics::SerialChain& chain, const JointRotationTerms& m, bool links,
                  const Eigen::Ref<const Eigen::VectorXd>& q_rad, Eigen::Ref<Eigen::MatrixXd> rows) {
   const kinematics::Jacobian J = kinematics::jacobian(chain, q_rad);
   const int per_joint = m.degree + 1;
+  if (links) {  // link i's rotation r_i, in its own frame: R_base_i(q) r_i
+    const std::vector<Eigen::Isometry3d> frames = kinematics::link_frames(chain, q_rad);
+    const Eigen::Index first = q_rad.size() * per_joint;
+    for (Eigen::Index i = 0; i < q_rad.size(); ++i) {
+      rows.middleCols<3>(first + 3 * i) = frames[static_cast<std::size_t>(i) + 1].linear();
+    }
+  }
   for (Eigen::Index i = 0; i < q_rad.size(); ++i) {
     const double span = m.q_hi_rad(i) - m.q_lo_rad(i);
     const double u =
@@ -44,14 +58,28 @@ void design_rows(const kinematics::SerialChain& chain, const JointRotationTerms&
 }
 
 Eigen::MatrixXd design(const kinematics::SerialChain& chain, const JointRotationTerms& m,
-                       const Eigen::MatrixXd& joints_rad, const std::vector<Eigen::Index>& which) {
-  const auto columns = static_cast<Eigen::Index>(joints_rad.rows() * (m.degree + 1));
-  Eigen::MatrixXd a(3 * static_cast<Eigen::Index>(which.size()), columns);
+                       bool links, const Eigen::MatrixXd& joints_rad,
+                       const std::vector<Eigen::Index>& which) {
+  Eigen::MatrixXd a(3 * static_cast<Eigen::Index>(which.size()),
+                    n_columns(m, static_cast<int>(joints_rad.rows()), links));
   for (std::size_t r = 0; r < which.size(); ++r) {
-    design_rows(chain, m, joints_rad.col(which[r]),
+    design_rows(chain, m, links, joints_rad.col(which[r]),
                 a.middleRows(3 * static_cast<Eigen::Index>(r), 3));
   }
   return a;
+}
+
+// The fitted coefficients into the terms: joint functions, then the links' rotations.
+void store(JointRotationTerms& m, bool links, const Eigen::VectorXd& c, int n_joints) {
+  const Eigen::Index joint_columns = n_joints * (m.degree + 1);
+  m.coefficients = c.head(joint_columns);
+  m.link_rotations_rad = links ? Eigen::VectorXd(c.tail(3 * n_joints)) : Eigen::VectorXd();
+}
+
+Eigen::VectorXd coefficients_of(const JointRotationTerms& m) {
+  Eigen::VectorXd c(m.coefficients.size() + m.link_rotations_rad.size());
+  c << m.coefficients, m.link_rotations_rad;
+  return c;
 }
 
 Eigen::VectorXd targets(const Points3& g, const std::vector<Eigen::Index>& which) {
@@ -68,16 +96,24 @@ Eigen::VectorXd solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b) {
     const double norm = a.col(c).norm();
     scale(c) = norm > 0.0 ? 1.0 / norm : 0.0;
   }
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a * scale.asDiagonal());
-  qr.setThreshold(kRelativeRankTolerance);
-  return scale.asDiagonal() * qr.solve(b);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a * scale.asDiagonal(),
+                                        Eigen::ComputeThinU | Eigen::ComputeThinV);
+  svd.setThreshold(kRelativeRankTolerance);
+  return scale.asDiagonal() * svd.solve(b);
 }
 
 }  // namespace
 
 void validate_joint_rotation(const JointRotationTerms& t, int n_joints) {
   VRREG_THROW_UNLESS(t.degree >= -1 && t.degree <= 40, "joint rotation: degree " << t.degree);
-  if (t.degree < 0) return;
+  VRREG_THROW_UNLESS(
+      (t.link_rotations_rad.size() == 0 || t.link_rotations_rad.size() == 3 * n_joints) &&
+          t.link_rotations_rad.allFinite(),
+      "joint rotation: link rotations do not fit " << n_joints << " joints");
+  if (t.degree < 0) {
+    VRREG_THROW_UNLESS(t.coefficients.size() == 0, "joint rotation: coefficients without a degree");
+    return;
+  }
   VRREG_THROW_UNLESS(t.q_lo_rad.size() == n_joints && t.q_hi_rad.size() == n_joints &&
                          t.coefficients.size() == n_joints * (t.degree + 1) &&
                          t.q_lo_rad.allFinite() && t.q_hi_rad.allFinite() &&
@@ -88,10 +124,11 @@ void validate_joint_rotation(const JointRotationTerms& t, int n_joints) {
 Eigen::Vector3d joint_rotation_rad(const JointRotationTerms& terms,
                                    const kinematics::SerialChain& chain,
                                    const Eigen::Ref<const Eigen::VectorXd>& q_rad) {
-  if (terms.degree < 0) return Eigen::Vector3d::Zero();
-  Eigen::MatrixXd rows(3, terms.coefficients.size());
-  design_rows(chain, terms, q_rad, rows);
-  return rows * terms.coefficients;
+  const bool links = terms.link_rotations_rad.size() > 0;
+  if (terms.degree < 0 && !links) return Eigen::Vector3d::Zero();
+  Eigen::MatrixXd rows(3, n_columns(terms, chain.n_joints(), links));
+  design_rows(chain, terms, links, q_rad, rows);
+  return rows * coefficients_of(terms);
 }
 
 JointRotationTerms fit_joint_rotation(const kinematics::SerialChain& chain,
@@ -111,36 +148,42 @@ JointRotationTerms fit_joint_rotation(const kinematics::SerialChain& chain,
   for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
   double best_rms = std::numeric_limits<double>::infinity();
   int best_degree = -1;
-  for (const int degree : kDegrees) {
-    m.degree = degree;
-    const auto columns = chain.n_joints() * (degree + 1);
-    if (3 * n < 2 * (columns + 1)) break;  // too few equations for this degree
-    double sum_sq = 0.0;
-    for (int fold = 0; fold < folds; ++fold) {
-      std::vector<Eigen::Index> train, test;
-      for (std::size_t r = 0; r < order.size(); ++r)
-        (static_cast<int>(r % static_cast<std::size_t>(folds)) == fold ? test : train)
-            .push_back(order[r]);
-      const Eigen::VectorXd b_test = targets(g_robot_rad, test);
-      if (degree < 0) {
-        sum_sq += b_test.squaredNorm();
-        continue;
+  bool best_links = false;
+  for (const bool links : {false, true}) {
+    for (const int degree : kDegrees) {
+      m.degree = degree;
+      const Eigen::Index columns = n_columns(m, chain.n_joints(), links);
+      if (3 * n < 2 * (columns + 1)) break;  // too few equations for this degree
+      double sum_sq = 0.0;
+      for (int fold = 0; fold < folds; ++fold) {
+        std::vector<Eigen::Index> train, test;
+        for (std::size_t r = 0; r < order.size(); ++r)
+          (static_cast<int>(r % static_cast<std::size_t>(folds)) == fold ? test : train)
+              .push_back(order[r]);
+        const Eigen::VectorXd b_test = targets(g_robot_rad, test);
+        if (columns == 0) {
+          sum_sq += b_test.squaredNorm();
+          continue;
+        }
+        const Eigen::VectorXd c =
+            solve(design(chain, m, links, joints_rad, train), targets(g_robot_rad, train));
+        sum_sq += (design(chain, m, links, joints_rad, test) * c - b_test).squaredNorm();
       }
-      const Eigen::VectorXd c =
-          solve(design(chain, m, joints_rad, train), targets(g_robot_rad, train));
-      sum_sq += (design(chain, m, joints_rad, test) * c - b_test).squaredNorm();
-    }
-    const double rms = std::sqrt(sum_sq / static_cast<double>(n));
-    if (rms < best_rms) {
-      best_rms = rms;
-      best_degree = degree;
+      const double rms = std::sqrt(sum_sq / static_cast<double>(n));
+      if (rms < best_rms) {
+        best_rms = rms;
+        best_degree = degree;
+        best_links = links;
+      }
     }
   }
   m.degree = best_degree;
-  if (m.degree < 0) return m;
+  if (m.degree < 0 && !best_links) return m;
   std::vector<Eigen::Index> all(static_cast<std::size_t>(n));
   std::iota(all.begin(), all.end(), Eigen::Index{0});
-  m.coefficients = solve(design(chain, m, joints_rad, all), targets(g_robot_rad, all));
+  store(m, best_links,
+        solve(design(chain, m, best_links, joints_rad, all), targets(g_robot_rad, all)),
+        chain.n_joints());
   return m;
 }
 

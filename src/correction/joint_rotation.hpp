@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Internal to correction: what the joint-space model fitted on positions leaves of the fiducials'
-// orientation errors, as joint-angle errors seen by orientations only (e.g. the last joint's
-// offset when the marker sits near its axis): g(q) = sum_i z_i(q) dq_i(q_i), z_i the axis of
-// revolute joint i in the base frame and dq_i a Legendre series over the joint's fitted range,
-// one degree for every joint chosen by K-fold cross-validation (first order in dq).
+// orientation errors, as joint-angle errors and link rotations seen by orientations only (e.g.
+// the last joint's offset, the wrist's twist errors, with the marker near the wrist's axes):
+// g(q) = sum_i z_i(q) dq_i(q_i) + sum_i R_base_i(q) r_i, z_i the axis of revolute joint i in the
+// base frame, dq_i a Legendre series over the joint's fitted range (one degree for every joint)
+// and r_i link i's constant rotation in its own frame; the degree and whether the links'
+// rotations enter chosen by K-fold cross-validation (first order in dq and r).
 #include <Eigen/Core>
 #include <cstdint>
 
@@ -23,7 +25,10 @@ Eigen::Vector3d joint_rotation_rad(const JointRotationTerms& terms,
 void validate_joint_rotation(const JointRotationTerms& terms, int n_joints);
 
 /// Fits g to `g_robot_rad` (3 x J) at joints `joints_rad` (n x J), choosing the degree among
-/// -1 (none), 0, 1, 2, 4, 6, 8 by `folds`-fold cross-validation (seeded shuffle).
+/// -1 (none), 0, 1, 2, 4, 6, 8, with or without the links' rotations, by `folds`-fold
+/// cross-validation (seeded shuffle); least squares by SVD, minimum norm (the links' rotations
+/// about their joints' axes repeat the joint functions' offsets, and near-redundant
+/// combinations must stay small).
 JointRotationTerms fit_joint_rotation(const kinematics::SerialChain& chain,
                                       const Eigen::MatrixXd& joints_rad, const Points3& g_robot_rad,
                                       int folds = 5, std::uint64_t seed = 1);

@@ -291,7 +291,7 @@ nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrecto
     for (int c = 0; c < 3; ++c) mean.push_back(finite(saved.mean_residual(r, c), "mean residual"));
   out["mean_residual"] = std::move(mean);
   out["joint_rms_rad"] = finite(saved.joint_rms_rad, "joint rms");
-  if (saved.joint_terms.degree >= 0) {
+  if (saved.joint_terms.degree >= 0 || saved.joint_terms.link_rotations_rad.size() > 0) {
     const JointRotationTerms& t = saved.joint_terms;
     const auto list = [](const Eigen::VectorXd& v) {
       nlohmann::ordered_json a = nlohmann::ordered_json::array();
@@ -302,6 +302,9 @@ nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrecto
                           {"q_lo_rad", list(t.q_lo_rad)},
                           {"q_hi_rad", list(t.q_hi_rad)},
                           {"coefficients", list(t.coefficients)}};
+    if (t.link_rotations_rad.size() > 0) {
+      out["joint_terms"]["link_rotations_rad"] = list(t.link_rotations_rad);
+    }
   }
   if (saved.tangent) out["tangent"] = corrector_json(*saved.tangent);
   return out;
@@ -326,10 +329,13 @@ SavedOrientationCorrector read_orientation_corrector(const json& item, const std
       return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(v.data(), std::ssize(v)));
     };
     out.joint_terms.degree = f.integer(t, at, "degree");
-    if (out.joint_terms.degree < 0) f.fail(join_path(at, "degree"), "negative");
+    if (out.joint_terms.degree < -1) f.fail(join_path(at, "degree"), "below -1 (none)");
     out.joint_terms.q_lo_rad = vector("q_lo_rad");
     out.joint_terms.q_hi_rad = vector("q_hi_rad");
     out.joint_terms.coefficients = vector("coefficients");
+    if (t.contains("link_rotations_rad")) {
+      out.joint_terms.link_rotations_rad = vector("link_rotations_rad");
+    }
   }
   if (item.contains("tangent")) {
     out.tangent = read_corrector(item.at("tangent"), join_path(path, "tangent"), f);

@@ -31,6 +31,8 @@ TEST(OrientationCli, SimulateRegisterEvaluateCorrectWithARigidBody) {
   const nlohmann::json model = nlohmann::json::parse(read_text(dir / "cell.json"));
   ASSERT_TRUE(model.contains("orientation_corrector"));
   EXPECT_EQ(model["orientation_corrector"]["method"], "joint");
+  // The wrist's link rotations, which positions do not show, are saved with the joint terms.
+  EXPECT_EQ(model["orientation_corrector"]["joint_terms"]["link_rotations_rad"].size(), 18U);
   EXPECT_EQ(model["fiducials"][0]["q_sensor_marker"].size(), 4U);
 
   const CliResult table = run_vrreg("evaluate --model " + path("cell.json") + " --targets " +
@@ -45,6 +47,7 @@ TEST(OrientationCli, SimulateRegisterEvaluateCorrectWithARigidBody) {
   const double cor = o["cor_rms_angle_mrad"].get<double>();
   EXPECT_GT(unc, 5.0);        // the UR5's wrist offsets: ~16 mrad
   EXPECT_LT(cor, 0.2 * unc);  // >= 80 % removed
+  EXPECT_LT(cor, 0.5);        // to the A1 cell's noise floor (0.36 mrad)
   EXPECT_GT(o["calibration"]["rms_angle_over_sd"].get<double>(), 0.8);
   EXPECT_LT(o["calibration"]["rms_angle_over_sd"].get<double>(), 1.25);
   EXPECT_NE(read_text(dir / "targets.csv").find(",unc_angle_mrad,cor_angle_mrad"),

@@ -44,16 +44,21 @@ struct OrientationCorrection {
   int n_flagged = 0;  ///< targets not corrected
 };
 
-/// The joint model's orientation-only terms: joint-angle errors that positions do not show
-/// (e.g. the last joint's offset with the marker near its axis), fitted on what the position
-/// model leaves of the fiducials' orientations: g(q) = sum_i z_i(q) dq_i(q_i), z_i the axis of
-/// revolute joint i and dq_i a Legendre series of `degree` over the joint's fitted range
-/// [q_lo, q_hi]; degree -1: none.
+/// The joint model's orientation-only terms: joint-angle errors and link rotations that
+/// positions do not show (e.g. the last joint's offset, the wrist's twist errors, with the marker
+/// near the wrist's axes), fitted on what the position model leaves of the fiducials'
+/// orientations: g(q) = sum_i z_i(q) dq_i(q_i) + sum_i R_base_i(q) r_i, z_i the axis of revolute
+/// joint i, dq_i a Legendre series of `degree` over the joint's fitted range [q_lo, q_hi]
+/// (degree -1: none) and r_i link i's rotation in its own frame.
 struct JointRotationTerms {
   int degree = -1;
   Eigen::VectorXd q_lo_rad{};
   Eigen::VectorXd q_hi_rad{};
   Eigen::VectorXd coefficients{};  ///< joint-major, n_joints x (degree + 1) [rad]
+  /// Each link's constant small rotation in its own frame (frames 1..n, 3 each) [rad], which
+  /// positions hardly show when the marker is near the wrist's axes: g(q) += sum_i R_base_i(q)
+  /// r_i. Empty: none.
+  Eigen::VectorXd link_rotations_rad{};
 };
 
 /// An orientation field's saved form: what restore() needs besides the fiducials, their rotation
