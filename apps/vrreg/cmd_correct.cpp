@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // vrreg correct: RRBC-corrected robot-frame positions for points measured by the sensor
 // (Eq. 7, 8, then mapped with {R, tau}): what the robot should be commanded to.
+#include <algorithm>
 #include <cstdio>
+#include <iostream>
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
@@ -37,9 +39,24 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   options.extrapolate = args.interpolation.extrapolate;
   options.exact = args.interpolation.exact;
   if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
-  const CorrectResult r =
-      correct(model, read_measurements(args.points, read_options), options);
+  const MeasurementSet points = read_measurements(args.points, read_options);
+  const CorrectResult r = correct(model, points, options);
   const TargetCorrection& c = r.correction;
+  // A file may carry orientations for other reasons: corrected positions are still right, but
+  // the orientations are not corrected, and the user is told so rather than left to assume.
+  const bool points_have_orientations =
+      std::any_of(points.locations.begin(), points.locations.end(),
+                  [](const Location& l) { return l.q_sensor_marker.has_value(); });
+  const bool model_has_orientations =
+      std::all_of(model.fiducials.begin(), model.fiducials.end(), [](const Location& f) {
+        return f.q_sensor_marker.has_value() && f.q_robot_marker.has_value();
+      });
+  if (points_have_orientations && !model_has_orientations) {
+    std::cerr << "vrreg: warning: " << args.points
+              << ": the points' orientations (sensor_q*) are not corrected: the model's "
+                 "fiducials carry no measured and commanded orientations (sensor_q*, "
+                 "robot_q*); positions only\n";
+  }
   io::write_corrected_csv(args.output, r, args.model, args.points);
   const std::size_t n_points = r.names.size();
 

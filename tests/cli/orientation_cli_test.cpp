@@ -100,6 +100,25 @@ TEST(OrientationCli, BadQuaternionColumnsAreOneLineErrors) {
       << alone.err;
 }
 
+TEST(OrientationCli, OrientationsAModelCannotCorrectAreSaidNotCorrected) {
+  const fs::path dir = fresh_dir("orientation_cli_spheres");
+  const auto path = [&dir](const char* name) { return (dir / name).string(); };
+  ASSERT_EQ(run_vrreg("simulate ur5 A1 -o " + path("spheres.csv")).status, 0);
+  ASSERT_EQ(run_vrreg("simulate ur5 A1 --rigid-body-mm 50 -o " + path("body.csv")).status, 0);
+  ASSERT_EQ(
+      run_vrreg("register --fiducials " + path("spheres.csv") + " -o " + path("m.json")).status, 0);
+  const CliResult r = run_vrreg("correct --model " + path("m.json") + " --points " +
+                                path("body.csv") + " -o " + path("out.csv"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("orientations (sensor_q*) are not corrected"), std::string::npos) << r.err;
+  EXPECT_EQ(read_text(dir / "out.csv").find("robot_qx"), std::string::npos);
+  // Points without orientations: nothing to say.
+  const CliResult plain = run_vrreg("correct --model " + path("m.json") + " --points " +
+                                    path("spheres.csv") + " -o " + path("out2.csv"));
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_EQ(plain.err.find("not corrected"), std::string::npos) << plain.err;
+}
+
 TEST(OrientationCli, SnippetsWriteThePoseFunctions) {
   const fs::path dir = fresh_dir("orientation_cli_snippet");
   const auto path = [&dir](const char* name) { return (dir / name).string(); };
