@@ -47,11 +47,7 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   const bool points_have_orientations =
       std::any_of(points.locations.begin(), points.locations.end(),
                   [](const Location& l) { return l.q_sensor_marker.has_value(); });
-  const bool model_has_orientations =
-      std::all_of(model.fiducials.begin(), model.fiducials.end(), [](const Location& f) {
-        return f.q_sensor_marker.has_value() && f.q_robot_marker.has_value();
-      });
-  if (points_have_orientations && !model_has_orientations) {
+  if (points_have_orientations && !model.has_fiducial_orientations()) {
     std::cerr << "vrreg: warning: " << args.points
               << ": the points' orientations (sensor_q*) are not corrected: the model's "
                  "fiducials carry no measured and commanded orientations (sensor_q*, "

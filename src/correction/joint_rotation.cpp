@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "joint_rotation.hpp"
 
-#include <Eigen/QR>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
@@ -89,7 +88,8 @@ Eigen::VectorXd targets(const Points3& g, const std::vector<Eigen::Index>& which
   return b;
 }
 
-// Least squares on unit-norm columns; columns redundant with the kept ones stay 0.
+// Least squares on unit-norm columns, minimum norm (SVD): singular values below
+// kRelativeRankTolerance of the largest are dropped, so near-redundant combinations stay small.
 Eigen::VectorXd solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b) {
   Eigen::VectorXd scale = Eigen::VectorXd::Zero(a.cols());
   for (Eigen::Index c = 0; c < a.cols(); ++c) {

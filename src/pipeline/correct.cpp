@@ -111,8 +111,7 @@ MeasuredPoints in_registered_frame(const RegistrationModel& model, const Measure
   if (!model.T_registered_sensor) return points;
   MeasuredPoints out = points;
   out.sensor_m = model.registered_sensor_points(points.sensor_m);
-  const Eigen::Quaterniond turn(model.T_registered_sensor->rotation);
-  for (Eigen::Quaterniond& q : out.q_sensor_marker) q = turn * q;
+  for (Eigen::Quaterniond& q : out.q_sensor_marker) q = model.registered_sensor_orientation(q);
   return out;
 }
 
@@ -159,7 +158,7 @@ PreparedCorrector::PreparedCorrector(std::shared_ptr<const RegistrationModel> mo
     // The fiducials' joints: every point is compared with them.
     joints_needed_ = static_cast<int>(model_->fiducials.front().q_rad.size());
   }
-  corrects_orientation_ = pipeline_detail::has_fiducial_orientations(*model_);
+  corrects_orientation_ = model_->has_fiducial_orientations();
   if (corrects_point_by_point(*model_, options_)) {
     corrector_ = std::make_shared<const Corrector>(corrector);
     if (corrects_orientation_) {

@@ -64,4 +64,17 @@ Points3 RegistrationModel::registered_sensor_points(const ConstPoints3Ref& senso
   return T_registered_sensor->apply_all(sensor_m);
 }
 
+Eigen::Quaterniond RegistrationModel::registered_sensor_orientation(
+    const Eigen::Quaterniond& q_sensor_marker) const {
+  if (!T_registered_sensor) return q_sensor_marker;
+  return Eigen::Quaterniond(T_registered_sensor->rotation) * q_sensor_marker;
+}
+
+bool RegistrationModel::has_fiducial_orientations() const {
+  return !fiducials.empty() &&
+         std::all_of(fiducials.begin(), fiducials.end(), [](const Location& f) {
+           return f.q_sensor_marker.has_value() && f.q_robot_marker.has_value();
+         });
+}
+
 }  // namespace vrreg

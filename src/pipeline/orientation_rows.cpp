@@ -9,13 +9,6 @@
 
 namespace vrreg::pipeline_detail {
 
-bool has_fiducial_orientations(const RegistrationModel& model) {
-  return !model.fiducials.empty() &&
-         std::all_of(model.fiducials.begin(), model.fiducials.end(), [](const Location& f) {
-           return f.q_sensor_marker.has_value() && f.q_robot_marker.has_value();
-         });
-}
-
 OrientationInputs orientation_inputs(const RegistrationModel& model) {
   std::vector<Eigen::Matrix3d> measured, commanded;
   for (const Location& f : model.fiducials) {
@@ -39,7 +32,7 @@ OrientationCorrector fit_orientation(const RegistrationModel& model, const Corre
 std::optional<OrientationCorrector> orientation_field_for(
     const RegistrationModel& model, const Corrector& positions,
     const std::optional<kinematics::SerialChain>& robot) {
-  if (!has_fiducial_orientations(model)) return std::nullopt;
+  if (!model.has_fiducial_orientations()) return std::nullopt;
   if (model.orientation_corrector && model.corrector &&
       positions.shares_fit_with(*model.corrector)) {
     return model.orientation_corrector;
@@ -48,7 +41,7 @@ std::optional<OrientationCorrector> orientation_field_for(
 }
 
 void require_orientation_field(const RegistrationModel& model, std::size_t n_orientations) {
-  VRREG_THROW_UNLESS(n_orientations == 0 || has_fiducial_orientations(model),
+  VRREG_THROW_UNLESS(n_orientations == 0 || model.has_fiducial_orientations(),
                      "the points carry orientations but the model's fiducials do not (register "
                      "rigid-body fiducials with measured and commanded orientations to correct "
                      "orientations; docs/orientation.md)");
@@ -58,7 +51,7 @@ std::optional<OrientationCorrection> correct_orientation_rows(
     const RegistrationModel& model, const MeasurementSet& set, const std::vector<std::size_t>& rows,
     const Corrector& positions, const CorrectionQuery& query, const TargetCorrection& answer,
     const std::optional<kinematics::SerialChain>& robot) {
-  if (!has_fiducial_orientations(model)) return std::nullopt;
+  if (!model.has_fiducial_orientations()) return std::nullopt;
   std::vector<Eigen::Matrix3d> R_sensor_marker;
   for (const std::size_t r : rows) {
     const Location& l = set.locations.at(r);
@@ -75,7 +68,7 @@ namespace vrreg {
 OrientationCorrector restore_orientation_corrector(const RegistrationModel& model,
                                                    const SavedOrientationCorrector& saved) {
   VRREG_THROW_UNLESS(model.corrector, "an orientation field needs the model's corrector");
-  VRREG_THROW_UNLESS(pipeline_detail::has_fiducial_orientations(model),
+  VRREG_THROW_UNLESS(model.has_fiducial_orientations(),
                      "an orientation field needs every fiducial's measured and commanded "
                      "orientation");
   const pipeline_detail::OrientationInputs in = pipeline_detail::orientation_inputs(model);

@@ -15,12 +15,9 @@
 
 namespace vrreg::pipeline_detail {
 
-/// Whether every fiducial of `model` has a measured and a commanded orientation.
-bool has_fiducial_orientations(const RegistrationModel& model);
-
 /// The model's fiducials' rotation residuals (robot frame [rad]) and the noise of one averaged
 /// orientation per axis [rad] when the fiducials have repeat readings. Requires
-/// has_fiducial_orientations(model).
+/// model.has_fiducial_orientations().
 struct OrientationInputs {
   Points3 residuals_rad;
   std::optional<double> noise_sd_rad;

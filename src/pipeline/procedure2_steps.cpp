@@ -45,8 +45,7 @@ void prepare_points(const RegistrationModel& model, const MeasurementSet& file_s
     for (Location& l : out.registered.locations) {
       l.sensor_m = model.T_registered_sensor->apply(l.sensor_m);
       if (l.q_sensor_marker) {
-        l.q_sensor_marker =
-            Eigen::Quaterniond(model.T_registered_sensor->rotation) * *l.q_sensor_marker;
+        l.q_sensor_marker = model.registered_sensor_orientation(*l.q_sensor_marker);
       }
     }
     out.set = &out.registered;

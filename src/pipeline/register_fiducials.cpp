@@ -111,7 +111,7 @@ RegisterResult register_unchecked(const MeasurementSet& input, const RegisterOpt
           pipeline_detail::corrector_data(out.model, out.model.robot),
           pipeline_detail::corrector_options(options.interpolation, strategy,
                                              options.procedure2.joint_norm));
-      if (pipeline_detail::has_fiducial_orientations(out.model)) {  // rigid-body markers
+      if (out.model.has_fiducial_orientations()) {  // rigid-body markers
         out.model.orientation_corrector =
             pipeline_detail::fit_orientation(out.model, *out.model.corrector, out.model.robot);
       }

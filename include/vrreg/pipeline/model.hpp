@@ -74,6 +74,12 @@ struct RegistrationModel {
   void validate() const;
   /// `sensor_m` (today's sensor frame) in the frame the fiducials were read in [m].
   [[nodiscard]] Points3 registered_sensor_points(const ConstPoints3Ref& sensor_m) const;
+  /// An orientation measured in today's sensor frame, in the frame the fiducials were read in.
+  [[nodiscard]] Eigen::Quaterniond registered_sensor_orientation(
+      const Eigen::Quaterniond& q_sensor_marker) const;
+  /// Whether every fiducial has a measured and a commanded orientation (rigid-body markers):
+  /// what an orientation field is fitted on.
+  [[nodiscard]] bool has_fiducial_orientations() const;
 };
 
 /// The corrector `saved` describes, restored on the model's fiducials without fitting (what io
