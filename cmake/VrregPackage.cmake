@@ -65,11 +65,33 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/vrregConfigVersion.cmake
 install(FILES ${PROJECT_BINARY_DIR}/vrregConfig.cmake ${PROJECT_BINARY_DIR}/vrregConfigVersion.cmake
         DESTINATION ${cmake_dir} COMPONENT dev)
 
-# vrreg.pc finds its prefix from its own place (${pcfiledir}), so an installed tree can move.
+# The build tree is a package too: find_package(vrreg) with vrreg_DIR=<build>, or
+# PKG_CONFIG_PATH=<build>, gives the source and generated headers, the built libraries and the
+# Eigen setting (docs/install.md), as the installed package does.
+export(EXPORT vrregTargets NAMESPACE vrreg:: FILE ${PROJECT_BINARY_DIR}/vrregTargets.cmake)
+
+# The installed vrreg.pc finds its prefix from its own place (${pcfiledir}), so an installed tree
+# can move; it is kept apart from the build tree's, whose paths are absolute.
 file(RELATIVE_PATH VRREG_PC_PREFIX_FROM_PCFILEDIR ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig
      ${CMAKE_INSTALL_PREFIX})
 string(REGEX REPLACE "/$" "" VRREG_PC_PREFIX_FROM_PCFILEDIR "${VRREG_PC_PREFIX_FROM_PCFILEDIR}")
 string(STRIP "${VRREG_PC_LIBS}" VRREG_PC_LIBS)
-configure_file(${CMAKE_CURRENT_LIST_DIR}/vrreg.pc.in ${PROJECT_BINARY_DIR}/vrreg.pc @ONLY)
-install(FILES ${PROJECT_BINARY_DIR}/vrreg.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
+set(VRREG_PC_PREFIX "\${pcfiledir}/${VRREG_PC_PREFIX_FROM_PCFILEDIR}")
+set(VRREG_PC_INCLUDEDIR "\${prefix}/${CMAKE_INSTALL_INCLUDEDIR}")
+set(VRREG_PC_INCLUDE_FLAGS "-I\${includedir}")
+set(VRREG_PC_LIBDIR "\${prefix}/${CMAKE_INSTALL_LIBDIR}")
+configure_file(${CMAKE_CURRENT_LIST_DIR}/vrreg.pc.in ${PROJECT_BINARY_DIR}/install/vrreg.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/install/vrreg.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
         COMPONENT dev)
+set(VRREG_PC_PREFIX "${PROJECT_BINARY_DIR}")
+set(VRREG_PC_INCLUDEDIR "${PROJECT_SOURCE_DIR}/include")
+# vrreg/config.hpp is generated into the build's include/.
+set(VRREG_PC_INCLUDE_FLAGS "-I\${includedir} -I${PROJECT_BINARY_DIR}/include")
+set(VRREG_PC_LIBDIR "$<TARGET_LINKER_FILE_DIR:vrreg_core>")
+configure_file(${CMAKE_CURRENT_LIST_DIR}/vrreg.pc.in ${PROJECT_BINARY_DIR}/vrreg.pc.in @ONLY)
+get_property(multi_config GLOBAL PROPERTY GENERATOR_IS_MULTI_CONFIG)
+if(multi_config)
+  file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/$<CONFIG>/vrreg.pc INPUT ${PROJECT_BINARY_DIR}/vrreg.pc.in)
+else()
+  file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/vrreg.pc INPUT ${PROJECT_BINARY_DIR}/vrreg.pc.in)
+endif()

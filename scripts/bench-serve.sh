@@ -6,7 +6,8 @@
 # model (tabulated every 5 mm) and its RRBC grid model, beside a minimal Python service
 # wrapping scipy's RBFInterpolator (python/benchmarks/serve_peer.py). Every line-protocol reply of
 # vrreg is checked against `vrreg correct`'s CSV (wrong = 0), but for the poses (checked against
-# vrreg::correct in tests/serve/serve_orientation_test.cpp).
+# vrreg::correct in tests/serve/serve_orientation_test.cpp). Last, one robot client's latency while
+# two clients send 10 000-point HTTP batches.
 #   scripts/bench-serve.sh [SECONDS_PER_RUN]        (default 5; needs the release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -82,3 +83,36 @@ for c in 1 16 64; do run vrreg a1g line 127.0.0.1:$line $c "$work/a1.txt" "$work
 for c in 1 16 64; do run vrreg a1k line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-kriging.expect"; done
 for c in 1 16 64; do run vrreg "a1k pose" line 127.0.0.1:$line $c "$work/a1-pose.txt"; done
 for c in 1 16 64; do run "scipy peer" lattice line 127.0.0.1:$peer $c "$work/lattice.txt"; done
+
+# A robot's request while cell software sends batches: one line-protocol client (checked) beside
+# two clients posting 10 000-point HTTP batches back to back. Batches are answered on workers of
+# their own, so the line request's p99 should stay near the table's 1-client row (<= 1 ms).
+/usr/bin/python3 - "$http" "$work/a1.txt" "$seconds" > "$work/batches.log" <<'PY' &
+import http.client, json, sys, threading, time
+port, points_file, seconds = int(sys.argv[1]), sys.argv[2], float(sys.argv[3]) + 1.0
+points = [[float(v) for v in line.split()] for line in open(points_file) if line.strip()]
+body = json.dumps({"model": "a1k", "points": [{"sensor_mm": points[i % len(points)]}
+                                              for i in range(10000)]})
+times = []
+def post():
+    c = http.client.HTTPConnection("127.0.0.1", port, timeout=60)
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        start = time.monotonic()
+        c.request("POST", "/v1/correct", body, {"Content-Type": "application/json"})
+        r = c.getresponse()
+        r.read()
+        assert r.status == 200, r.status
+        times.append(time.monotonic() - start)
+threads = [threading.Thread(target=post) for _ in range(2)]
+for t in threads: t.start()
+for t in threads: t.join()
+print(f"{len(times)} batches of 10 000 points, {min(times):.2f}-{max(times):.2f} s each")
+PY
+batcher=$!
+pids+=($batcher)
+sleep 0.5  # the batches running before the robot's requests are timed
+run vrreg "a1k beside 2 batch clients" line 127.0.0.1:$line 1 "$work/a1.txt" "$work/a1-kriging.expect"
+wait "$batcher"
+echo
+echo "beside the robot: $(cat "$work/batches.log")"

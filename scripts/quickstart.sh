@@ -13,7 +13,8 @@ scripts/install-deps.sh
 # the module only where Python's development files are there (the configure step says so).
 cmake --preset release >/dev/null
 targets=(vrreg_cli)
-if cmake --build build/release --target help | grep -q '^_vrreg:'; then targets+=(_vrreg); fi
+# grep reads all of the list (no -q): an early exit would end cmake with SIGPIPE under pipefail.
+if cmake --build build/release --target help | grep '^_vrreg:' >/dev/null; then targets+=(_vrreg); fi
 scripts/build.sh release "${targets[@]}"
 vrreg=build/release/bin/vrreg
 data=examples/data/example-cell.csv

@@ -9,7 +9,9 @@ scripts/install-deps.sh --with-browser --with-clang
 scripts/build.sh release
 ctest --preset release
 # From a fresh clone: the .deb files and lintian, install, the outside consumer (baseline and
-# -march=native), pip install . into a venv (a few minutes: one release build without tests).
+# -march=native, installed and from the build tree), every library, command and Python source
+# compiled on its own (scripts/check-sources.sh: unity batches hide a missing include), pip
+# install . into a venv (a few minutes: one release build without tests, one syntax pass).
 scripts/test-package.sh
 scripts/build.sh asan
 ctest --preset asan

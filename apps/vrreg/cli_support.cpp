@@ -3,24 +3,29 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "option_flags.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/units.hpp"
+#include "vrreg/kinematics/robots.hpp"
 
 namespace vrreg::cli {
 
 void InterpolationFlags::add_to(CLI::App& command) {
-  command
-      .add_option("--interpolation", method,
-                  "how corrections reach targets. The paper's linear weights (Eq. 7): linear "
-                  "(grid if the fiducials hold a complete grid, else scattered; the default), "
-                  "grid, scattered, octuplet. Models of the whole field (docs/field-models.md): "
-                  "trilinear (finest lattice, empty nodes filled), kriging, rbf, joint (needs "
-                  "joints and --robot), auto (the lowest cross-validated error)")
-      ->check(CLI::IsMember({"linear", "grid", "scattered", "octuplet", "trilinear", "kriging",
-                             "rbf", "joint", "auto"}));
+  CLI::Option* interpolation =
+      command
+          .add_option(
+              "--interpolation", method,
+              "how corrections reach targets. The paper's linear weights (Eq. 7): linear "
+              "(grid if the fiducials hold a complete grid, else scattered; the default), "
+              "grid, scattered, octuplet. Models of the whole field (docs/field-models.md): "
+              "trilinear (finest lattice, empty nodes filled), kriging, rbf, joint (needs "
+              "joints and --robot), auto (the lowest cross-validated error)")
+          ->check(CLI::IsMember({"linear", "grid", "scattered", "octuplet", "trilinear", "kriging",
+                                 "rbf", "joint", "auto"}));
+  not_a_file(command, interpolation);
   command
       .add_option("--cube-mm", cube_mm,
                   "octuplet cube edge in mm (fiducials at the 8 corners around each target)")
@@ -49,18 +54,48 @@ InterpolationChoice InterpolationFlags::choice() const {
 
 InterpolationSettings InterpolationFlags::settings() const { return choice().apply({}); }
 
-CLI::Option* add_output_option(CLI::App& command, const std::string& names, std::string& path,
-                               const std::string& help) {
-  const CLI::Validator file_name(
-      [](std::string& value) { return value.empty() ? std::string("needs a file name") : ""; }, "");
-  return command.add_option(names, path, help)->check(file_name);
+namespace {
+
+CLI::Validator not_empty(const std::string& needs) {
+  return {[needs](std::string& text) { return text.empty() ? "needs " + needs : std::string(); },
+          ""};
 }
 
-CLI::Option* add_input_option(CLI::App& command, const std::string& names, std::string& value,
-                              const std::string& help, const std::string& needs) {
-  const CLI::Validator not_empty(
-      [needs](std::string& text) { return text.empty() ? "needs " + needs : std::string(); }, "");
-  return command.add_option(names, value, help)->check(not_empty);
+}  // namespace
+
+CLI::Option* add_output_option(CLI::App& command, const std::string& names, std::string& path,
+                               const std::string& help) {
+  CLI::Option* option = command.add_option(names, path, help)->check(not_empty("a file name"));
+  return declare_file_role(command, option, FileRole::kOutput,
+                           [&path] { return std::vector<std::string>{path}; });
+}
+
+CLI::Option* add_input_option(CLI::App& command, const std::string& names, std::string& path,
+                              const std::string& help) {
+  CLI::Option* option = command.add_option(names, path, help)->check(not_empty("a file name"));
+  return declare_file_role(command, option, FileRole::kInput,
+                           [&path] { return std::vector<std::string>{path}; });
+}
+
+CLI::Option* add_robot_option(CLI::App& command, const std::string& names, std::string& robot,
+                              const std::string& help) {
+  CLI::Option* option =
+      command.add_option(names, robot, help)->check(not_empty("a robot name or file"));
+  // A built-in name is no file, even when a file of that name happens to be there.
+  return declare_file_role(command, option, FileRole::kInput, [&robot] {
+    return kinematics::robot_by_name(robot) ? std::vector<std::string>{}
+                                            : std::vector<std::string>{robot};
+  });
+}
+
+CLI::Option* add_input_directory_option(CLI::App& command, const std::string& names,
+                                        std::string& dir, const std::string& help,
+                                        const std::string& file) {
+  CLI::Option* option = command.add_option(names, dir, help)->check(not_empty("a directory name"));
+  return declare_file_role(command, option, FileRole::kInput, [&dir, file] {
+    return dir.empty() ? std::vector<std::string>{}
+                       : std::vector<std::string>{(std::filesystem::path(dir) / file).string()};
+  });
 }
 
 CLI::Validator non_negative_seed() {

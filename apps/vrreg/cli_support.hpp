@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "file_options.hpp"
 #include "vrreg/core/file_error.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/io/output_paths.hpp"
@@ -44,15 +45,24 @@ void naming_file(const std::string& path, F&& run) {
   }
 }
 
-/// Adds an output-file option: when given, its name may not be empty (an empty one would quietly
-/// write nothing).
+/// Adds an output-file option (FileRole::kOutput): when given, its name may not be empty (an empty
+/// one would quietly write nothing).
 CLI::Option* add_output_option(CLI::App& command, const std::string& names, std::string& path,
                                const std::string& help);
 
-/// Adds an input option (a file, or a robot name or file): when given, its value may not be empty
-/// (an empty one would be opened as ""), and the usage error names the option.
-CLI::Option* add_input_option(CLI::App& command, const std::string& names, std::string& value,
-                              const std::string& help, const std::string& needs = "a file name");
+/// Adds an input-file option (FileRole::kInput): when given, its value may not be empty (an
+/// empty one would be opened as ""), and the usage error names the option.
+CLI::Option* add_input_option(CLI::App& command, const std::string& names, std::string& path,
+                              const std::string& help);
+
+/// Adds a robot option: a built-in robot's name, or a robot file (then an input).
+CLI::Option* add_robot_option(CLI::App& command, const std::string& names, std::string& robot,
+                              const std::string& help);
+
+/// Adds an option naming a directory the command reads `file` from (the input is DIR/file).
+CLI::Option* add_input_directory_option(CLI::App& command, const std::string& names,
+                                        std::string& dir, const std::string& help,
+                                        const std::string& file);
 
 /// Refuses a negative seed: CLI11 would read "-1" into an unsigned seed as 2^64 - 1.
 CLI::Validator non_negative_seed();

@@ -53,9 +53,6 @@ std::vector<std::uint64_t> parse_seeds(const std::string& text) {
 }
 
 void run_calibrate(const CalibrateArgs& args) {
-  io::check_outputs_are_not_inputs(
-      {{"--ur5-errors", args.ur5_errors}, {"--lwr4-errors", args.lwr4_errors}},
-      {{"-o", args.output}});
   experiments::CalibrationOptions options;
   options.seeds = parse_seeds(args.seeds);
   options.ur5 = args.only.empty() || args.only == "ur5";
@@ -86,12 +83,13 @@ void add_calibrate_command(CLI::App& app) {
       "simulate the paper's datasets for several seeds and compare the pipeline's figures with "
       "the paper's (the table of docs/testbed-calibration.md)");
   cmd->group("Developer commands");
-  cmd->add_option("--seeds", args->seeds, "seeds, e.g. 1-10 or 1,3,5-7")->capture_default_str();
+  not_a_file(*cmd, cmd->add_option("--seeds", args->seeds, "seeds, e.g. 1-10 or 1,3,5-7")
+                       ->capture_default_str());
   add_input_option(*cmd, "--ur5-errors", args->ur5_errors, "error-model file for the UR5 test bed");
   add_input_option(*cmd, "--lwr4-errors", args->lwr4_errors,
                    "error-model file for the LWR test bed");
-  cmd->add_option("--only", args->only, "run one test bed only")
-      ->check(CLI::IsMember({"ur5", "lwr4"}));
+  not_a_file(*cmd, cmd->add_option("--only", args->only, "run one test bed only")
+                       ->check(CLI::IsMember({"ur5", "lwr4"})));
   add_output_option(*cmd, "-o,--output", args->output, "also write the Markdown tables here");
   cmd->add_flag("--check", args->check, "exit with status 1 when a band is not met");
   cmd->callback([args] { run_calibrate(*args); });

@@ -83,8 +83,6 @@ void print_text(const CheckArgs& args, const CheckResult& r) {
 }
 
 void run_check(const CheckArgs& args) {
-  io::check_outputs_are_not_inputs({{"--model", args.model}, {"--monitor", args.monitor}},
-                                   {{"--history", args.history}});
   const RegistrationModel model = io::read_model_json(args.model);
   const MeasurementSet today = read_measurements(args.monitor);
   CheckOptions options;
@@ -133,7 +131,8 @@ void add_check_command(CLI::App& app) {
       ->check(CLI::Range(4, 100000));
   add_output_option(*cmd, "--history", args->history,
                     "append this check (time, verdict, change) to a CSV history of the cell");
-  cmd->add_option("--time", args->time, "when the points were read (ISO 8601; default: now, UTC)");
+  not_a_file(*cmd, cmd->add_option("--time", args->time,
+                                   "when the points were read (ISO 8601; default: now, UTC)"));
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_check(*args); });
 }

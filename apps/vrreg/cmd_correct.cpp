@@ -27,6 +27,7 @@ struct CorrectArgs {
   std::string output;
   std::string robot;
   bool json = false;
+  std::optional<double> angle_sd_limit_mrad;
 };
 
 void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& model) {
@@ -40,7 +41,10 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   options.exact = args.interpolation.exact;
   if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
   const MeasurementSet points = read_measurements(args.points, read_options);
-  const CorrectResult r = correct(model, points, options);
+  CorrectResult r = correct(model, points, options);
+  if (r.orientation && args.angle_sd_limit_mrad) {
+    r.orientation->sd_limit_rad = 1e-3 * *args.angle_sd_limit_mrad;
+  }
   const TargetCorrection& c = r.correction;
   // A file may carry orientations for other reasons: corrected positions are still right, but
   // the orientations are not corrected, and the user is told so rather than left to assume.
@@ -68,6 +72,7 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   std::printf("  interpolation                 %s: %s\n", to_string(c.method_used),
               c.layout.c_str());
   print_predicted_sd(c, std::nullopt);
+  if (r.orientation) print_orientation_correction(*r.orientation);
   if (c.n_flagged > 0) {
     std::printf(
         "  not correctable               %d points (%s; status column says why; robot_* holds "
@@ -78,8 +83,6 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
 }
 
 void run_correct(const CorrectArgs& args) {
-  io::check_outputs_are_not_inputs({{"--model", args.model}, {"--points", args.points}},
-                                   {{"-o", args.output}});
   const RegistrationModel model = io::read_model_json(args.model);
   naming_file(args.model, [&] { run_correct_unchecked(args, model); });
 }
@@ -100,12 +103,14 @@ void add_correct_command(CLI::App& app) {
   args->interpolation.add_corrector_flags_to(*cmd);
   add_output_option(*cmd, "-o,--output", args->output, "write corrected positions (CSV, mm) here")
       ->required();
-  add_input_option(
-      *cmd, "--robot", args->robot,
-      "with --interpolation joint or auto: the robot whose joints the file gives (ur5, "
-      "lwr4, ... or a robot file, its tool the marker); default: the model's",
-      "a robot name or file");
+  add_robot_option(*cmd, "--robot", args->robot,
+                   "with --interpolation joint or auto: the robot whose joints the file gives "
+                   "(ur5, lwr4, ... or a robot file, its tool the marker); default: the model's");
   cmd->add_flag("--json", args->json, "print a JSON summary instead of the table");
+  cmd->add_option("--angle-sd-limit-mrad", args->angle_sd_limit_mrad,
+                  "flag points whose predicted orientation sd is above this, mrad "
+                  "(angle_sd_over_limit); default: the fiducials' uncorrected RMS angle")
+      ->check(CLI::PositiveNumber);
   cmd->callback([args] { run_correct(*args); });
 }
 

@@ -2,6 +2,7 @@
 // vrreg evaluate: the true accuracy of a registration on independent targets: TRE and RMS_T
 // uncorrected and RRBC-corrected (Eq. 3, 4, 7, 8), gamma, N_bad and Delta TRE (section 5.1),
 // following the model's Procedure 2 strategy (section 4.4, strategy_cli.hpp).
+#include <algorithm>
 #include <cstdio>
 
 #include "cli_support.hpp"
@@ -88,8 +89,12 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   print_predicted_sd(c, r.calibration);
   if (r.orientation) {
     const OrientationEvaluation& o = *r.orientation;
-    std::printf("  RMS angle (orientation)       %8.3f mrad %6.3f mrad\n", 1e3 * o.unc_rms_rad,
-                1e3 * o.cor_rms_rad);
+    const bool not_better =
+        std::any_of(o.correction.status.begin(), o.correction.status.end(),
+                    [](StencilStatus status) { return status == StencilStatus::kNotBetterThanNone; });
+    std::printf("  RMS angle (orientation)       %8.3f mrad %6.3f mrad%s\n", 1e3 * o.unc_rms_rad,
+                1e3 * o.cor_rms_rad,
+                not_better ? "  (not corrected: correction not better than none)" : "");
     if (o.calibration.n > 0) {
       std::printf("  angle / predicted sd          RMS %.2f (1 = honest), %.0f %% within 2 sd\n",
                   o.calibration.rms_ratio, 100.0 * o.calibration.within_2sigma);
@@ -108,8 +113,6 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
 }
 
 void run_evaluate(const EvaluateArgs& args) {
-  io::check_outputs_are_not_inputs({{"--model", args.model}, {"--targets", args.targets}},
-                                   {{"--per-target", args.per_target}});
   const RegistrationModel model = io::read_model_json(args.model);
   naming_file(args.model, [&] { run_evaluate_unchecked(args, model); });
 }
@@ -131,11 +134,9 @@ void add_evaluate_command(CLI::App& app) {
   args->strategy.add_to(*cmd, false);
   add_output_option(*cmd, "--per-target", args->per_target,
                     "write per-target errors (CSV, mm) here");
-  add_input_option(
-      *cmd, "--robot", args->robot,
-      "with --interpolation joint or auto: the robot whose joints the files give (ur5, "
-      "lwr4, ... or a robot file, its tool the marker); default: the model's",
-      "a robot name or file");
+  add_robot_option(*cmd, "--robot", args->robot,
+                   "with --interpolation joint or auto: the robot whose joints the files give "
+                   "(ur5, lwr4, ... or a robot file, its tool the marker); default: the model's");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_evaluate(*args); });
 }

@@ -20,7 +20,6 @@ struct ExportArgs {
 };
 
 void run_export(const ExportArgs& args) {
-  io::check_outputs_are_not_inputs({{"--model", args.model}}, {{"-o", args.output}});
   const RegistrationModel model = io::read_model_json(args.model);
   std::string text;
   naming_file(args.model,
@@ -42,9 +41,9 @@ void add_export_command(CLI::App& app) {
       "write a model's T_robot_sensor (sensor -> robot; and the marker offset) as YAML "
       "(easy_handeye style), a URDF joint or JSON with a 4x4 matrix, in metres");
   add_input_option(*cmd, "--model", args->model, "model JSON of vrreg register")->required();
-  cmd->add_option("--format", args->format, "yaml, urdf or json")
-      ->required()
-      ->check(CLI::IsMember({"yaml", "urdf", "json"}));
+  not_a_file(*cmd, cmd->add_option("--format", args->format, "yaml, urdf or json")
+                       ->required()
+                       ->check(CLI::IsMember({"yaml", "urdf", "json"})));
   add_output_option(*cmd, "-o,--output", args->output, "write here (default: standard output)");
   cmd->callback([args] { run_export(*args); });
 }

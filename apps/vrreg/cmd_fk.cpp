@@ -105,10 +105,9 @@ void add_fk_command(CLI::App& app) {
   auto args = std::make_shared<FkArgs>();
   CLI::App* cmd = app.add_subcommand(
       "fk", "forward kinematics: the flange (or TCP) pose of a robot at given joint values");
-  add_input_option(*cmd, "robot", args->robot,
+  add_robot_option(*cmd, "robot", args->robot,
                    "ur3, ur5, ur10, ur5e, lwr4, or a robot file (URDF, or JSON/YAML: a DH table "
-                   "or a URDF with its base and tip link)",
-                   "a robot name or file")
+                   "or a URDF with its base and tip link)")
       ->required();
   cmd->add_option("joints", args->joints,
                   "joint values Q1 ... QN (rad, or deg with --deg; a prismatic joint's in m, or mm "

@@ -139,16 +139,13 @@ void run_ik(const IkArgs& args) {
     VRREG_THROW_UNLESS(static_cast<int>(args.current_deg.size()) == chain.n_joints(),
                        "--current-deg: robot '" << chain.name() << "' has " << chain.n_joints()
                                                 << " joints, got " << args.current_deg.size());
+    // In the units the joints are shown in: deg, mm for a prismatic joint.
     Eigen::VectorXd current(chain.n_joints());
     for (int i = 0; i < chain.n_joints(); ++i) {
-      current(i) = units::deg_to_rad(args.current_deg[static_cast<std::size_t>(i)]);
+      const double shown = args.current_deg[static_cast<std::size_t>(i)];
+      current(i) = chain.row(i).prismatic() ? units::mm_to_m(shown) : units::deg_to_rad(shown);
     }
-    kinematics::IkOptions all;
-    all.apply_joint_limits = false;
-    r = chain.family() == ChainFamily::kUr
-            ? kinematics::ur_inverse_kinematics_nearest(chain, t, current)
-            : kinematics::nearest_solution(
-                  chain, kinematics::inverse_kinematics(chain, t, psi_rad, all), current);
+    r = kinematics::inverse_kinematics_nearest(chain, t, current, psi_rad);
   }
   std::optional<kinematics::PsiIntervalsResult> psi_ranges;
   if (chain.family() == ChainFamily::kLwr) psi_ranges = kinematics::lwr_feasible_psi(chain, t);
@@ -211,10 +208,9 @@ void add_ik_command(CLI::App& app) {
       "inverse kinematics: every joint solution of a flange (or TCP) pose, labelled by "
       "arm configuration (UR: up to 8; LWR 4+: up to 8 per arm angle psi; any other chain: "
       "numerically, one per configuration class found); exit status 3 when there is none");
-  add_input_option(*cmd, "robot", args->robot,
+  add_robot_option(*cmd, "robot", args->robot,
                    "ur3, ur5, ur10, ur5e, lwr4, or a robot file (URDF, or JSON/YAML: a DH table "
-                   "or a URDF with its base and tip link)",
-                   "a robot name or file")
+                   "or a URDF with its base and tip link)")
       ->required();
   cmd->add_option("--xyz-mm", args->xyz_mm, "position X Y Z in mm")->expected(3)->required();
   cmd->add_option("--rpy-deg", args->rpy_deg,
@@ -231,8 +227,9 @@ void add_ik_command(CLI::App& app) {
                   "TCP offset X Y Z in the flange frame, mm (replaces the robot's tool)")
       ->expected(3);
   cmd->add_option("--current-deg", args->current_deg,
-                  "current joints Q1 ... QN in deg: print only the solution a controller picks "
-                  "(nearest, 2 pi shifts included)")
+                  "current joints Q1 ... QN in deg (mm for a prismatic joint): print only the "
+                  "solution a controller picks (nearest, 2 pi shifts included; a numerical IK "
+                  "starts from them)")
       ->expected(1, kinematics::kMaxJoints);
   cmd->add_flag("--json", args->json,
                 "print one JSON object {\"solutions\": [{\"q_rad\", \"config\", ...}], ...}");

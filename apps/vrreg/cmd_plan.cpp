@@ -169,12 +169,6 @@ void run_plan_unchecked(const PlanArgs& args) {
 }
 
 void run_plan(const PlanArgs& args) {
-  // --robot names a built-in robot or a robot file; only a file is an input.
-  const std::string robot_file = kinematics::robot_by_name(args.robot) ? "" : args.robot;
-  io::check_outputs_are_not_inputs({{"--parts", args.parts}, {"--robot", robot_file}},
-                                   {{"-o", args.output},
-                                    {"--program", args.program},
-                                    {"--monitor-program", args.monitor_program}});
   try {
     run_plan_unchecked(args);
   } catch (const io::FileError&) {
@@ -203,10 +197,9 @@ void add_plan_command(CLI::App& app) {
   cmd->add_option("--spacing-mm", args->spacing_mm, "grid spacing A in mm")
       ->required()
       ->check(CLI::PositiveNumber);
-  add_input_option(*cmd, "--robot", args->robot,
+  add_robot_option(*cmd, "--robot", args->robot,
                    "ur5, lwr4 (defaults from the simulated test bed), ur3, ur10, ur5e, or a robot "
-                   "file (URDF, or JSON/YAML)",
-                   "a robot name or file")
+                   "file (URDF, or JSON/YAML)")
       ->required();
   cmd->add_option("--sigma-noise-mm", args->sigma_noise_mm,
                   "noise sigma_noise in mm for d_min > 2.5 sigma_noise (Eq. 9); default the "
@@ -224,8 +217,9 @@ void add_plan_command(CLI::App& app) {
   cmd->add_option("--home-deg", args->home_deg,
                   "joints Q1 ... QN in deg: each part point takes the IK solution nearest these")
       ->expected(1, kinematics::kMaxJoints);
-  cmd->add_option("--norm", args->norm, "joint-space distance for 'nearest': l2 (paper) or linf")
-      ->check(CLI::IsMember({"l2", "linf"}));
+  not_a_file(*cmd, cmd->add_option("--norm", args->norm,
+                                   "joint-space distance for 'nearest': l2 (paper) or linf")
+                       ->check(CLI::IsMember({"l2", "linf"})));
   cmd->add_option("--offset-tilt-deg", args->offset_tilt_deg,
                   "add poses with the tool tilted by this angle about its x and y axes (+-) at the "
                   "corners and centre of the volume, so that the marker's offset on the flange is "

@@ -40,7 +40,6 @@ void run_register_unchecked(const RegisterArgs& args);
 
 // Degenerate geometry and the like come from the library without a file name.
 void run_register(const RegisterArgs& args) {
-  io::check_outputs_are_not_inputs({{"--fiducials", args.fiducials}}, {{"-o", args.output}});
   naming_file(args.fiducials, [&] { run_register_unchecked(args); });
 }
 
@@ -156,6 +155,7 @@ void run_register_unchecked(const RegisterArgs& args) {
     std::printf("  interpolation stored          %s (evaluate's and correct's default)\n",
                 to_string(model.interpolation.method));
   }
+  if (model.orientation_corrector) print_orientation_field(*model.orientation_corrector);
   if (!args.output.empty()) std::printf("  model written to %s\n", args.output.c_str());
 }
 

@@ -56,15 +56,6 @@ report::ReportPage cell_page(const ReportArgs& args) {
 }
 
 void run_report(const ReportArgs& args) {
-  const std::string reproduce_json =
-      args.reproduce.empty() ? ""
-                             : (std::filesystem::path(args.reproduce) / "reproduce.json").string();
-  io::check_outputs_are_not_inputs({{"--model", args.model},
-                                    {"--targets", args.targets},
-                                    {"--plan", args.plan},
-                                    {"--history", args.history},
-                                    {"--reproduce", reproduce_json}},
-                                   {{"-o", args.output}});
   const bool cell = !args.model.empty() || !args.targets.empty();
   VRREG_THROW_UNLESS(cell != !args.reproduce.empty(),
                      "give either --model and --targets (your cell) or --reproduce DIR "
@@ -118,9 +109,10 @@ void add_report_command(CLI::App& app) {
   cmd->add_option("--sigma-rep-mm", args->sigma_rep_mm,
                   "robot repeatability in mm, for sigma_noise and rho (UR5 0.1, LWR 4+ 0.05)")
       ->check(CLI::NonNegativeNumber);
-  add_input_option(*cmd, "--reproduce", args->reproduce,
-                   "directory written by 'vrreg reproduce --out DIR' (reads DIR/reproduce.json)",
-                   "a directory name");
+  add_input_directory_option(
+      *cmd, "--reproduce", args->reproduce,
+      "directory written by 'vrreg reproduce --out DIR' (reads DIR/reproduce.json)",
+      "reproduce.json");
   add_input_option(*cmd, "--history", args->history,
                    "with --model: the cell's check history (vrreg check --history) as a section");
   add_input_option(*cmd, "--plan", args->plan,

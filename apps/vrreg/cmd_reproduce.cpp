@@ -171,11 +171,14 @@ void add_reproduce_command(CLI::App& app) {
                   "every cell and how often each finding holds")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  cmd->add_option("--out", args->out,
-                  "directory for table1.csv, figure7_8.csv, figure10_targets.csv, "
-                  "figure11_delta_tre.csv, table2.csv, histograms_l.csv, tre_per_target.csv and "
-                  "reproduce.json (empty: write nothing)")
-      ->capture_default_str();
+  CLI::Option* out =
+      cmd->add_option("--out", args->out,
+                      "directory for table1.csv, figure7_8.csv, figure10_targets.csv, "
+                      "figure11_delta_tre.csv, table2.csv, histograms_l.csv, tre_per_target.csv "
+                      "and reproduce.json (empty: write nothing)")
+          ->capture_default_str();
+  declare_file_role(*cmd, out, FileRole::kOutputDirectory,
+                    [args] { return std::vector<std::string>{args->out}; });
   cmd->add_flag("--no-report", args->no_report,
                 "do not write report.html (the charts of 'vrreg report --reproduce DIR') to --out");
   cmd->add_flag("--beyond", args->beyond,
@@ -186,11 +189,11 @@ void add_reproduce_command(CLI::App& app) {
   cmd->add_flag("--quiet", args->quiet, "no progress bar or timing on stderr");
   cmd->add_flag("--check", args->check,
                 "exit with status 1 when a finding is not met (on >= 80 % of the seeds)");
-  cmd->add_option("--only", args->only,
-                  "run one test bed only (ur5: Table 1, Fig. 7-11; lwr4: "
-                  "Table 2)")
-      ->check(CLI::IsMember({"ur5", "lwr4"}))
-      ->group("");
+  not_a_file(*cmd, cmd->add_option("--only", args->only,
+                                   "run one test bed only (ur5: Table 1, Fig. 7-11; lwr4: "
+                                   "Table 2)")
+                       ->check(CLI::IsMember({"ur5", "lwr4"}))
+                       ->group(""));
   cmd->callback([args] { run_reproduce(*args); });
 }
 

@@ -6,6 +6,7 @@
 
 #include "cli_support.hpp"
 #include "command_registry.hpp"
+#include "serve/model_registry.hpp"
 #include "serve/service.hpp"
 #include "serve/served_model.hpp"
 #include "serve/token.hpp"
@@ -21,6 +22,9 @@ struct ServeArgs {
   std::string token_file;
   int threads = 0;
   int max_connections = 256;
+  int max_http_connections = 256;
+  int batch_threads = 0;
+  double max_extrapolation = 1.0;
   std::size_t max_body_bytes = 1u << 20;
   std::size_t max_batch = 10000;
   double idle_timeout_s = 600.0;
@@ -39,6 +43,9 @@ void run_serve(const ServeArgs& args) {
   options.token = serve::read_token(args.token_file);
   options.threads = args.threads;
   options.max_connections = args.max_connections;
+  options.max_http_connections = args.max_http_connections;
+  options.batch_threads = args.batch_threads;
+  options.max_extrapolation = args.max_extrapolation;
   options.max_body_bytes = args.max_body_bytes;
   options.max_batch = args.max_batch;
   options.idle_timeout_s = args.idle_timeout_s;
@@ -69,9 +76,10 @@ void run_serve(const ServeArgs& args) {
   log("ready (SIGHUP reloads the models, SIGINT or SIGTERM stops)");
   service.run_until_signalled();
   const serve::ServiceStats s = service.stats();
-  log("stopped after " + std::to_string(s.corrections) + " corrections (" +
-      std::to_string(s.refusals) + " refused) on " + std::to_string(s.connections) +
-      " connections");
+  log("stopped after " + std::to_string(s.corrections) + " corrections, " +
+      std::to_string(s.refusals) + " refusals (" + std::to_string(s.malformed) + " malformed, " +
+      std::to_string(s.unauthorized) + " unauthorized, " + std::to_string(s.limited) +
+      " over a bound) on " + std::to_string(s.connections) + " connections");
 }
 
 void add_serve_command(CLI::App& app) {
@@ -80,13 +88,20 @@ void add_serve_command(CLI::App& app) {
       "serve",
       "Answer correction requests from robot programs (line protocol) and cell software "
       "(HTTP/JSON) with models fitted once (docs/serve.md)");
-  cmd->add_option("--model", args->models,
-                  "a model JSON written by 'vrreg register -o', as FILE (named by its stem) or "
-                  "NAME=FILE; repeat for several")
-      ->required();
-  cmd->add_option("--listen", args->listen,
-                  "line protocol address, ADDRESS:PORT (e.g. 127.0.0.1:30401; port 0: any free)");
-  cmd->add_option("--http", args->http, "HTTP/JSON address, ADDRESS:PORT");
+  CLI::Option* models =
+      cmd->add_option("--model", args->models,
+                      "a model JSON written by 'vrreg register -o', as FILE (named by its stem) or "
+                      "NAME=FILE; repeat for several")
+          ->required();
+  declare_file_role(*cmd, models, FileRole::kInput, [args] {
+    std::vector<std::string> paths;
+    for (const std::string& m : args->models) paths.push_back(serve::parse_model_source(m).path);
+    return paths;
+  });
+  not_a_file(*cmd, cmd->add_option("--listen", args->listen,
+                                   "line protocol address, ADDRESS:PORT (e.g. 127.0.0.1:30401; "
+                                   "port 0: any free)"));
+  not_a_file(*cmd, cmd->add_option("--http", args->http, "HTTP/JSON address, ADDRESS:PORT"));
   cmd->add_flag("--allow-remote", args->allow_remote,
                 "listen on addresses other than loopback (needs a token)");
   add_input_option(*cmd, "--token-file", args->token_file,
@@ -95,17 +110,38 @@ void add_serve_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "threads answering (default: the cores)")
       ->check(CLI::Range(0, 256));
   cmd->add_option("--max-connections", args->max_connections,
-                  "open connections at most; more are refused (default 256)")
+                  "open line-protocol connections at most, the robots' own budget (HTTP "
+                  "connections never take one); more are refused (default 256)")
       ->check(CLI::Range(1, 100000));
+  cmd->add_option("--max-http-connections", args->max_http_connections,
+                  "open HTTP connections at most; more are refused with 503 (default 256)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--batch-threads", args->batch_threads,
+                  "threads answering HTTP batches, apart from those answering the robots "
+                  "(default: half the cores, at least 1)")
+      ->check(CLI::Range(0, 256));
+  cmd->add_option("--max-extrapolation", args->max_extrapolation,
+                  "refuse (code 8) an 'extrapolate' request farther from the fiducials' bounding "
+                  "box than this many times its diagonal (default 1; inf: no cap)");
   cmd->add_option("--max-body-bytes", args->max_body_bytes, "HTTP body size at most (default 1 MiB)");
   cmd->add_option("--max-batch", args->max_batch, "points in one HTTP batch at most (default 10000)");
   cmd->add_option("--idle-timeout-s", args->idle_timeout_s,
                   "close a connection silent this long (default 600)");
   cmd->add_option("--reload-poll-ms", args->reload_poll_ms,
                   "check the model files for changes this often; 0: on SIGHUP only (default 1000)");
-  cmd->add_option("--audit-log", args->audit_log,
-                  "append one JSON line per correction here (time, client, model sha256, input, "
-                  "output, sd), rotated");
+  CLI::Option* audit_log =
+      cmd->add_option("--audit-log", args->audit_log,
+                      "append one JSON line per correction here (time, client, model sha256, "
+                      "input, output, sd), rotated");
+  // Rotation renames the log to LOG.1 ... LOG.KEEP and removes the oldest: all are written.
+  declare_file_role(*cmd, audit_log, FileRole::kOutput, [args] {
+    std::vector<std::string> paths;
+    if (args->audit_log.empty()) return paths;
+    paths.push_back(args->audit_log);
+    for (int k = 1; k <= args->audit_keep; ++k)
+      paths.push_back(args->audit_log + "." + std::to_string(k));
+    return paths;
+  });
   cmd->add_option("--audit-max-mb", args->audit_max_mb, "rotate the audit log at this size (default 64)")
       ->check(CLI::Range(0.004, 1e6));
   cmd->add_option("--audit-keep", args->audit_keep, "rotated audit logs kept (default 5)")

@@ -10,6 +10,7 @@
 #include "cli_support.hpp"
 #include "command_registry.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/plan_csv.hpp"
@@ -37,6 +38,7 @@ struct SimulateArgs {
   double bump_at_h = 0.0;
   double warmup_growth = 0.0;
   double rigid_body_mm = 0.0;
+  std::vector<double> body_mount_deg;
   double warmup_tau_h = 0.5;
   double daily_growth = 0.0;
   std::string only;
@@ -75,8 +77,6 @@ simulation::SimulatedDataset simulate_plan_file(const simulation::Testbed& testb
 }
 
 void run_simulate(const SimulateArgs& args) {
-  io::check_outputs_are_not_inputs({{"--plan", args.plan}, {"--errors", args.errors}},
-                                   {{"-o", args.output}, {"--write-errors", args.write_errors}});
   const simulation::Testbed testbed = simulation::testbed_by_name(args.testbed);
   simulation::SimulationOptions options;
   options.seed = args.seed;
@@ -93,6 +93,15 @@ void run_simulate(const SimulateArgs& args) {
   if (args.rigid_body_mm > 0.0) {
     options.errors = options.errors.value_or(testbed.default_errors);
     options.errors->tracker.rigid_body_radius_m = 1e-3 * args.rigid_body_mm;
+  }
+  if (!args.body_mount_deg.empty()) {
+    VRREG_THROW_UNLESS(args.rigid_body_mm > 0.0, "--body-mount-deg needs --rigid-body-mm");
+    for (const double v : args.body_mount_deg) {
+      VRREG_THROW_UNLESS(std::isfinite(v), "--body-mount-deg: values must be finite");
+    }
+    options.body_mount_rotation_rad =
+        units::kRadiansPerDegree *
+        Eigen::Vector3d(args.body_mount_deg[0], args.body_mount_deg[1], args.body_mount_deg[2]);
   }
   // Time: a check hours after registration sees the warm-up and any bump since.
   constexpr double kSecondsPerHour = 3600.0;
@@ -178,8 +187,9 @@ void add_simulate_command(CLI::App& app) {
       "simulate",
       "acquire one of the paper's datasets on a simulated test bed (ur5: A1, A2, B; "
       "lwr4: grid), or measure a plan (--plan), and write it as a measurement CSV");
-  cmd->add_option("TESTBED", args->testbed, "ur5 or lwr4")->required();
-  cmd->add_option("DATASET", args->dataset, "ur5: A1, A2 or B; lwr4: grid (or give --plan)");
+  not_a_file(*cmd, cmd->add_option("TESTBED", args->testbed, "ur5 or lwr4")->required());
+  not_a_file(*cmd, cmd->add_option("DATASET", args->dataset,
+                                   "ur5: A1, A2 or B; lwr4: grid (or give --plan)"));
   add_input_option(*cmd, "--plan", args->plan,
                    "measure this plan of 'vrreg plan --robot TESTBED' instead of a dataset: the "
                    "robot takes its joints, the tracker reads each location K times; then "
@@ -188,9 +198,10 @@ void add_simulate_command(CLI::App& app) {
                   "with --plan: visits of each monitor point (role monitor), in rounds at the end")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
-  cmd->add_option("--only", args->only,
-                  "with --plan: measure only the rows of this role (monitor: a check)")
-      ->check(CLI::IsMember({"fiducial", "target", "monitor"}));
+  not_a_file(*cmd, cmd->add_option("--only", args->only,
+                                   "with --plan: measure only the rows of this role (monitor: a "
+                                   "check)")
+                       ->check(CLI::IsMember({"fiducial", "target", "monitor"})));
   cmd->add_option("--at-h", args->at_h,
                   "acquire this many hours after time 0 (registration): the warm-up and a bump "
                   "since then apply, the noise is drawn afresh")
@@ -217,6 +228,10 @@ void add_simulate_command(CLI::App& app) {
                   "marker: adds the measured (sensor_q*) and commanded (robot_q*) orientations; "
                   "positions stay as without it")
       ->check(CLI::Range(0.0, 1000.0));
+  cmd->add_option("--body-mount-deg", args->body_mount_deg,
+                  "RX RY RZ: the rigid body mounted turned by this rotation vector (deg) in the "
+                  "tool frame it is commanded in (a mounting error); positions stay as without it")
+      ->expected(3);
   add_seed_option(*cmd, "--seed", args->seed,
                   "draws the robot's errors and the noise; the same seed gives the same file")
       ->capture_default_str();

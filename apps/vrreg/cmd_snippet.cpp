@@ -59,14 +59,15 @@ void add_snippet_command(CLI::App& app) {
       "Write the robot-program function that asks 'vrreg serve' for a correction (urscript: "
       "vrreg_correct(p) and vrreg_correct_pose(p); krl: VRREG_CORRECT, or VRREG_CORRECT_POSE "
       "with --pose, over EthernetKRL)");
-  cmd->add_option("language", args->language, "urscript or krl")
-      ->required()
-      ->check(CLI::IsMember({"urscript", "krl"}));
-  cmd->add_option("--model", args->model, "the served model's name (as 'vrreg serve' names it)")
-      ->required();
-  cmd->add_option("--connect", args->connect,
-                  "the service's line-protocol address as the robot reaches it (default "
-                  "127.0.0.1:30401)");
+  not_a_file(*cmd, cmd->add_option("language", args->language, "urscript or krl")
+                       ->required()
+                       ->check(CLI::IsMember({"urscript", "krl"})));
+  not_a_file(*cmd, cmd->add_option("--model", args->model,
+                                   "the served model's name (as 'vrreg serve' names it)")
+                       ->required());
+  not_a_file(*cmd, cmd->add_option("--connect", args->connect,
+                                   "the service's line-protocol address as the robot reaches it "
+                                   "(default 127.0.0.1:30401)"));
   cmd->add_option("--timeout-s", args->timeout_s, "no answer within this: stop (default 2)")
       ->check(CLI::Range(0.001, 60.0));
   add_input_option(*cmd, "--token-file", args->token_file,

@@ -25,8 +25,6 @@ struct UpdateArgs {
 };
 
 void run_update(const UpdateArgs& args) {
-  io::check_outputs_are_not_inputs({{"--model", args.model}, {"--points", args.points}},
-                                   {{"-o", args.output}});
   const RegistrationModel model = io::read_model_json(args.model);
   const MeasurementSet today = read_measurements(args.points);
   UpdateOptions options;
@@ -75,11 +73,12 @@ void add_update_command(CLI::App& app) {
   add_input_option(*cmd, "--points", args->points,
                    "measurement CSV read today: monitor rows and/or fiducial rows the model knows")
       ->required();
-  cmd->add_option("--change", args->change, "what changed, as `vrreg check` said")
-      ->required()
-      ->check(CLI::IsMember({"bump", "drift"}));
+  not_a_file(*cmd, cmd->add_option("--change", args->change, "what changed, as `vrreg check` said")
+                       ->required()
+                       ->check(CLI::IsMember({"bump", "drift"})));
   add_output_option(*cmd, "-o,--output", args->output, "write the new model JSON here")->required();
-  cmd->add_option("--time", args->time, "when the points were read (ISO 8601; default: now, UTC)");
+  not_a_file(*cmd, cmd->add_option("--time", args->time,
+                                   "when the points were read (ISO 8601; default: now, UTC)"));
   cmd->add_flag("--json", args->json, "print one JSON object instead of the summary");
   cmd->callback([args] { run_update(*args); });
 }

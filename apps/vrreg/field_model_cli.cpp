@@ -57,4 +57,58 @@ const char* why_not_correctable(const TargetCorrection& c) {
   return none ? "too few fiducials" : "outside the fiducials";
 }
 
+void print_orientation_field(const OrientationCorrector& field) {
+  constexpr double kMrad = 1e3;
+  std::printf("  orientation field             %s: %s\n", to_string(field.method()),
+              field.describe().c_str());
+  const double cv = kMrad * field.cv_rms_rad();
+  const double unc = kMrad * field.uncorrected_rms_rad();
+  if (field.cv_rms_rad() > 0.0) {
+    std::printf("  orientation RMS angle         %.3f mrad cross-validated, %.3f mrad uncorrected%s\n",
+                cv, unc,
+                field.applied() ? ""
+                                : ": NOT APPLIED (correction not better than none; orientations "
+                                  "are answered uncorrected)");
+  } else {
+    std::printf("  orientation RMS angle         %.3f mrad uncorrected (not cross-validated)\n",
+                unc);
+  }
+  if (field.cross_validation().size() > 1) {
+    std::printf("  orientation cross-validation  RMS angle over every fiducial (those a method "
+                "cannot predict at their uncorrected angle)\n");
+    for (const OrientationCvRow& row : field.cross_validation()) {
+      if (!row.applicable) {
+        std::printf("    %-10s   not applicable: %s\n", to_string(row.method), row.note.c_str());
+        continue;
+      }
+      std::printf("    %-10s   %8.3f mrad  (%lld predicted)%s\n", to_string(row.method),
+                  kMrad * row.rms_rad, static_cast<long long>(row.n_predicted),
+                  row.method == field.method() ? "   <- chosen" : "");
+    }
+  }
+}
+
+void print_orientation_correction(const OrientationCorrection& o) {
+  constexpr double kMrad = 1e3;
+  const auto n = static_cast<long long>(o.status.size());
+  long long not_better = 0;
+  for (const StencilStatus s : o.status) not_better += s == StencilStatus::kNotBetterThanNone;
+  if (not_better > 0 && not_better == o.n_flagged) {
+    std::printf("  orientation                   not corrected: %s (the model's orientation "
+                "field); robot_q* hold the uncorrected orientation\n",
+                to_string(StencilStatus::kNotBetterThanNone));
+    return;
+  }
+  std::printf("  orientation                   %s: %lld of %lld points corrected (orientation_status "
+              "says why not)\n",
+              to_string(o.method_used), n - o.n_flagged, n);
+  const PredictedSdSummary sd = summarize_predicted_sd(o.predicted_sd_rad);
+  if (sd.n == 0) return;
+  std::size_t over = 0;
+  for (std::size_t t = 0; t < o.status.size(); ++t) over += o.sd_over_limit(t) ? 1 : 0;
+  std::printf("  predicted angle sd            median %.3f mrad, max %.3f mrad; %zu above the limit "
+              "%.3f mrad (angle_sd_over_limit)\n",
+              kMrad * sd.median_m, kMrad * sd.max_m, over, kMrad * o.sd_limit_rad);
+}
+
 }  // namespace vrreg::cli

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/correction/orientation_field.hpp"
 #include "vrreg/metrics/uncertainty_calibration.hpp"
 #include "vrreg/pipeline/field_model.hpp"
 
@@ -20,5 +21,13 @@ void print_predicted_sd(const TargetCorrection& c,
 /// Why the flagged points of `c` were not corrected, for evaluate's and correct's summary:
 /// "too few fiducials" when none could be, else "outside the fiducials".
 const char* why_not_correctable(const TargetCorrection& c);
+
+/// register's lines on the orientation field: method, cross-validated and uncorrected RMS angle,
+/// whether it is applied, and the methods compared.
+void print_orientation_field(const OrientationCorrector& field);
+
+/// correct's line on the corrected orientations: how many, the predicted angle sd and how many
+/// are above the limit, or why none were corrected.
+void print_orientation_correction(const OrientationCorrection& o);
 
 }  // namespace vrreg::cli

@@ -12,20 +12,12 @@
 #include <string>
 
 #include "command_registry.hpp"
+#include "file_options.hpp"
 #include "option_flags.hpp"
 #include "progress_bar.hpp"
 #include "vrreg/config.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/io/atomic_write.hpp"
-
-namespace vrreg::cli {
-
-std::vector<CommandEntry>& command_registry() {
-  static std::vector<CommandEntry> registry;
-  return registry;
-}
-
-}  // namespace vrreg::cli
 
 int main(int argc, char** argv) {
   // Ctrl-C or kill while an output is written leaves no temporary file behind.
@@ -42,6 +34,10 @@ int main(int argc, char** argv) {
   std::stable_sort(registry.begin(), registry.end(),
                    [](const auto& a, const auto& b) { return a.order < b.order; });
   for (const auto& entry : registry) entry.setup(app);
+  // Before any command runs: no output of it may be, or link to, one of its inputs.
+  app.parse_complete_callback([&app] {
+    for (const CLI::App* command : app.get_subcommands()) vrreg::cli::check_command_files(*command);
+  });
 
   // CLI11 would answer `vrreg serve --help` with the main help and exit 0, as if `serve` were an
   // argument of --help: a word before any command that names no command is a usage error.

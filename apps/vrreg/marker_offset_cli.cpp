@@ -34,12 +34,12 @@ void MarkerOffsetFlags::add_to(CLI::App& command) {
                   "adds what the robot's own errors do to the offset to its stated uncertainty")
       ->needs(flag)
       ->check(CLI::Range(0.0, 10.0));
-  add_input_option(command, "--robot", robot,
+  add_robot_option(command, "--robot", robot,
                    "the robot whose joints the file gives (ur3, ur5, ur10, ur5e, lwr4 or a robot "
-                   "file, URDF or JSON/YAML; its tool is ignored): for "
-                   "--estimate-marker-offset and --marker-offset-mm, and stored in the model for "
-                   "--interpolation joint",
-                   "a robot name or file");
+                   "file, URDF or JSON/YAML): for --estimate-marker-offset and "
+                   "--marker-offset-mm, which replace its tool by the marker's offset, and, with "
+                   "its tool as the marker's offset, stored in the model for --interpolation "
+                   "joint (and auto)");
   command
       .add_option("--min-orientation-spread", min_orientation_spread,
                   "with --estimate-marker-offset: smallest RMS tilt [rad] for which the offset is "

@@ -18,6 +18,7 @@ void add_program_options(CLI::App& command, PlanArgs& args) {
                       "(KUKA PTP list) or csv (joints); a pause for the tracker readings at each "
                       "location (docs/hand-eye.md)")
           ->check(CLI::IsMember({"urscript", "krl", "csv"}));
+  not_a_file(command, format);
   add_output_option(command, "--program", args.program, "with --export: the program file")
       ->needs(format);
   format->needs("--program");

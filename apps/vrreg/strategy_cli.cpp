@@ -33,11 +33,14 @@ void StrategyFlags::add_to(CLI::App& command, bool for_register) {
                   for_register ? "Procedure 2 strategy 1, 2 or 3 (see below)"
                                : "Procedure 2 strategy (default: the model's; see below)")
       ->check(CLI::Range(1, 3));
-  command
-      .add_option("--joint-norm", joint_norm,
-                  for_register ? "joint-space distance of strategies 2 and 3: l2 (default) or linf"
-                               : "strategy 3: joint-space distance (default: the model's)")
-      ->check(CLI::IsMember({"l2", "linf"}));
+  not_a_file(
+      command,
+      command
+          .add_option("--joint-norm", joint_norm,
+                      for_register
+                          ? "joint-space distance of strategies 2 and 3: l2 (default) or linf"
+                          : "strategy 3: joint-space distance (default: the model's)")
+          ->check(CLI::IsMember({"l2", "linf"})));
   if (for_register) {
     add_seed_option(command, "--seed", seed,
                     "strategy 3: seed of the random corner configurations (default 1)");

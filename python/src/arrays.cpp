@@ -36,6 +36,10 @@ py::array real_array(const py::handle& object, const char* what) {
     bad_input(fmt::format("{}: complex numbers ({}), expected real numbers", what,
                           py::str(a.dtype()).cast<std::string>()));
   }
+  // numpy converts True/False to 1/0 silently: a mask passed by mistake would become metres.
+  if (a.dtype().kind() == 'b') {
+    bad_input(fmt::format("{}: booleans (bool), expected real numbers", what));
+  }
   return a;
 }
 

@@ -144,6 +144,16 @@ void bind_model(py::module_& m) {
             if (state.size() != 1) throw InputError("Model: bad pickle state");
             return io::parse_model_json(state[0].cast<std::string>(), "<pickle>");
           }))
+      // Protocols 0 and 1 would bypass __getstate__ (copyreg's _reduce_ex, which aborts on a
+      // pybind11 type): every protocol gets protocol 2's recipe, a bare Model that
+      // __setstate__ fills from the JSON.
+      .def(
+          "__reduce_ex__",
+          [](const py::object& self, int /*protocol*/) {
+            return py::make_tuple(py::module_::import("copyreg").attr("__newobj__"),
+                                  py::make_tuple(py::type::of(self)), self.attr("__getstate__")());
+          },
+          py::arg("protocol"))
       .def("__copy__", [](const RegistrationModel& s) { return RegistrationModel(s); })
       .def(
           "__deepcopy__",

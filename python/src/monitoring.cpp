@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // check / update: does a registration still hold (the model's monitor points read again), and a
 // new model version from a few points after a bump or a drift (pipeline/check.hpp, update.hpp).
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"

@@ -197,7 +197,8 @@ void bind_results(py::module_& m) {
       .value("MISSING_CORNER", StencilStatus::kMissingCorner)
       .value("OUTSIDE_SUPPORT", StencilStatus::kOutsideSupport)
       .value("EXTRAPOLATED", StencilStatus::kExtrapolated)
-      .value("TOO_FEW_FIDUCIALS", StencilStatus::kTooFewFiducials);
+      .value("TOO_FEW_FIDUCIALS", StencilStatus::kTooFewFiducials)
+      .value("NOT_BETTER_THAN_NONE", StencilStatus::kNotBetterThanNone);
 
   py::class_<RegisterResult> reg(m, "RegisterResult", "What register found; lengths in metres.");
   reg.def_property_readonly(

@@ -3,6 +3,7 @@
 import csv
 import os
 import re
+import socket
 import subprocess
 import time
 
@@ -88,8 +89,10 @@ def test_client_refusals_raise(service):
         with pytest.raises(vrreg.ServiceError) as e:
             client.correct("cell", [1e7, 0.0, 0.0])
         assert e.value.code == 3
-        c = client.correct("cell", [1e7, 0.0, 0.0], extrapolate=True)
-        assert c.sd_mm > 0
+        # Extrapolation is capped (vrreg serve --max-extrapolation): 10 km is beyond it.
+        with pytest.raises(vrreg.ServiceError) as e:
+            client.correct("cell", [1e7, 0.0, 0.0], extrapolate=True)
+        assert e.value.code == 8
         with pytest.raises(ValueError):
             client.correct("cell", [float("nan"), 0.0, 0.0])
         with pytest.raises(ValueError):
@@ -141,3 +144,13 @@ def test_client_corrects_orientations_as_the_library(pose_service):
         with pytest.raises(vrreg.ServiceError) as e:
             client.correct("cell", sensor_mm[0], sensor_q=[0.0, 0.0, 2.0, 1.0])
         assert e.value.code == 1
+
+
+def test_nothing_listening_is_a_service_error():
+    # A port just freed: nothing listens there.
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    with pytest.raises(vrreg.ServiceError, match=f"cannot connect to 127.0.0.1:{port}") as e:
+        vrreg.Client(port=port, timeout_s=2.0)
+    assert e.value.code == 0

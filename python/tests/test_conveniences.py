@@ -38,7 +38,9 @@ def test_pickle_and_copies_keep_the_model(registered):
     model = registered.model
     points = grid(3, 0.03) + 0.005
     want = vrreg.correct(model, points).corrected
-    for clone in (pickle.loads(pickle.dumps(model)), copy.copy(model), copy.deepcopy(model)):
+    pickled = [pickle.loads(pickle.dumps(model, protocol=p))
+               for p in range(pickle.HIGHEST_PROTOCOL + 1)]
+    for clone in (*pickled, copy.copy(model), copy.deepcopy(model)):
         assert clone is not model
         assert clone.to_json() == model.to_json()
         np.testing.assert_array_equal(vrreg.correct(clone, points).corrected, want)
@@ -75,6 +77,8 @@ def test_single_point_is_accepted(registered):
     (dict(sensor=grid(), robot=grid(), configs=np.ones(64)), r"^configs: expected integers"),
     (dict(sensor=grid(), robot=grid(), names="abc"), r"^names: expected a sequence of str"),
     (dict(sensor=grid(), robot=grid(), joints=np.ones((3, 6))), r"^joints: expected 64 entries"),
+    (dict(sensor=grid() > 0.01, robot=grid()), r"^sensor: booleans \(bool\), expected real"),
+    (dict(sensor=grid(), robot=grid(), weights=np.ones(64, dtype=bool)), r"^weights: booleans"),
 ])
 def test_bad_input_is_one_exception_with_python_names(kwargs, message):
     with pytest.raises(vrreg.InputError, match=message) as raised:

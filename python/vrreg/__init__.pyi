@@ -2,7 +2,7 @@
 # Type stubs of the vrreg package (the compiled _vrreg re-exported). Lengths in metres, angles in
 # radians; positions are (N, 3) float64 arrays (any strides; float32 converted).
 import os
-from typing import Any, ClassVar, Optional, Sequence
+from typing import Any, ClassVar, Optional, Sequence, SupportsIndex
 
 import numpy as np
 import numpy.typing as npt
@@ -33,6 +33,7 @@ class StencilStatus:
     OUTSIDE_SUPPORT: StencilStatus
     EXTRAPOLATED: StencilStatus
     TOO_FEW_FIDUCIALS: StencilStatus
+    NOT_BETTER_THAN_NONE: StencilStatus
     __members__: ClassVar[dict[str, StencilStatus]]
     def __init__(self, value: int) -> None: ...
     def __int__(self) -> int: ...
@@ -86,6 +87,7 @@ class Model:
     def __deepcopy__(self, memo: dict[int, object]) -> Model: ...
     def __getstate__(self) -> tuple[str]: ...
     def __setstate__(self, state: tuple[str]) -> None: ...
+    def __reduce_ex__(self, protocol: SupportsIndex) -> tuple[Any, tuple[str]]: ...
 
 class Measurements:
     """A measurement CSV's locations, repeat readings averaged, in file order."""

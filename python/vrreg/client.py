@@ -19,7 +19,7 @@ import numpy.typing as npt
 
 #: The service's reply codes (a refusal is sent as a negative sd).
 CODES = {1: "malformed", 2: "unknown model", 3: "not correctable", 4: "missing input",
-         5: "unauthorized", 6: "limit", 7: "internal error"}
+         5: "unauthorized", 6: "limit", 7: "internal error", 8: "too far to extrapolate"}
 
 
 class ServiceError(RuntimeError):
@@ -55,7 +55,10 @@ class Client:
 
     def __init__(self, host: str = "127.0.0.1", port: int = 30401, *,
                  token: Optional[str] = None, timeout_s: float = 2.0) -> None:
-        self._socket = socket.create_connection((host, port), timeout=timeout_s)
+        try:
+            self._socket = socket.create_connection((host, port), timeout=timeout_s)
+        except OSError as e:  # refused, unreachable, timed out, unknown host
+            raise ServiceError(0, f"cannot connect to {host}:{port}: {e}") from e
         self._socket.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         self._reader = self._socket.makefile("rb")
         if token is not None:

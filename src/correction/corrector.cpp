@@ -524,9 +524,14 @@ SdSource Corrector::sd_source() const { return impl_->sd_source; }
 const std::optional<CrossValidation>& Corrector::cross_validation() const {
   return impl_->cross_validation;
 }
-std::optional<Eigen::Vector3d> Corrector::rotation_error_rad(
+std::optional<Eigen::VectorXd> Corrector::joint_angle_errors_rad(
     const Eigen::Ref<const Eigen::VectorXd>& joints_rad) const {
-  return impl_->fitted->rotation_error_rad(joints_rad);
+  return impl_->fitted->joint_angle_errors_rad(joints_rad);
+}
+
+std::optional<Eigen::Vector3d> Corrector::rotation_error_rad(
+    const Eigen::Ref<const Eigen::VectorXd>& joints_rad, bool joint_angles_only) const {
+  return impl_->fitted->rotation_error_rad(joints_rad, joint_angles_only);
 }
 
 const SimilarityTransform& Corrector::T_robot_sensor() const { return impl_->T_robot_sensor; }

@@ -3,6 +3,8 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
+#include <array>
+#include <iterator>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -16,26 +18,43 @@ namespace vrreg::detail {
 namespace {
 
 constexpr int kDegrees[] = {-1, 0, 1, 2, 4, 6, 8};
-constexpr double kRelativeRankTolerance = 1e-9;
+// Singular values kept, relative to the largest of the unit-norm columns: cross-validation picks
+// one. A fixed tool orientation makes many link rotations and joint offsets nearly the same
+// column; keeping their tiny singular values turns the orientation noise into rotations of
+// radians that cancel only at the fiducials.
+constexpr double kRelativeThresholds[] = {1e-9, 1e-6, 1e-4, 1e-3, 1e-2, 3e-2, 1e-1};
+constexpr std::size_t kThresholds = std::size(kRelativeThresholds);
+constexpr double kNearTie = 1.01;
 
 // The model's columns: n (degree + 1) joint-function columns, then 3 per link frame when the
-// links' rotations are fitted.
-Eigen::Index n_columns(const JointRotationTerms& m, int n_joints, bool links) {
-  return n_joints * (m.degree + 1) + (links ? 3 * n_joints : 0);
+// links' rotations are fitted, then (when fitting) 3 for a constant rotation, fitted jointly
+// with the others and left to the mean residual afterwards.
+Eigen::Index n_columns(const JointRotationTerms& m, int n_joints, bool links, bool constant,
+                       bool scaled = false) {
+  return n_joints * (m.degree + 1) + (links ? 3 * n_joints : 0) + (scaled ? n_joints : 0) +
+         (constant ? 3 : 0);
 }
 
 // The design rows d g / d c of one fiducial (3 x n_columns).
 void design_rows(const kinematics::SerialChain& chain, const JointRotationTerms& m, bool links,
-                 const Eigen::Ref<const Eigen::VectorXd>& q_rad, Eigen::Ref<Eigen::MatrixXd> rows) {
+                 bool constant, const Eigen::Ref<const Eigen::VectorXd>& q_rad,
+                 const Eigen::VectorXd* dq_rad, Eigen::Ref<Eigen::MatrixXd> rows) {
   const kinematics::Jacobian J = kinematics::jacobian(chain, q_rad);
   const int per_joint = m.degree + 1;
+  const Eigen::Index first_link = q_rad.size() * per_joint;
   if (links) {  // link i's rotation r_i, in its own frame: R_base_i(q) r_i
     const std::vector<Eigen::Isometry3d> frames = kinematics::link_frames(chain, q_rad);
-    const Eigen::Index first = q_rad.size() * per_joint;
     for (Eigen::Index i = 0; i < q_rad.size(); ++i) {
-      rows.middleCols<3>(first + 3 * i) = frames[static_cast<std::size_t>(i) + 1].linear();
+      rows.middleCols<3>(first_link + 3 * i) = frames[static_cast<std::size_t>(i) + 1].linear();
     }
   }
+  if (dq_rad != nullptr) {  // the positions' joint-angle error of each joint, along its axis
+    const Eigen::Index first_scaled = first_link + (links ? 3 * q_rad.size() : 0);
+    for (Eigen::Index i = 0; i < q_rad.size(); ++i) {
+      rows.col(first_scaled + i) = J.block<3, 1>(3, i) * (*dq_rad)(i);
+    }
+  }
+  if (constant) rows.rightCols<3>().setIdentity();
   for (Eigen::Index i = 0; i < q_rad.size(); ++i) {
     const double span = m.q_hi_rad(i) - m.q_lo_rad(i);
     const double u =
@@ -57,27 +76,37 @@ void design_rows(const kinematics::SerialChain& chain, const JointRotationTerms&
 }
 
 Eigen::MatrixXd design(const kinematics::SerialChain& chain, const JointRotationTerms& m,
-                       bool links, const Eigen::MatrixXd& joints_rad,
+                       bool links, const Eigen::MatrixXd& joints_rad, const Eigen::MatrixXd* dq_rad,
                        const std::vector<Eigen::Index>& which) {
   Eigen::MatrixXd a(3 * static_cast<Eigen::Index>(which.size()),
-                    n_columns(m, static_cast<int>(joints_rad.rows()), links));
+                    n_columns(m, static_cast<int>(joints_rad.rows()), links, true,
+                              dq_rad != nullptr));
   for (std::size_t r = 0; r < which.size(); ++r) {
-    design_rows(chain, m, links, joints_rad.col(which[r]),
+    const Eigen::VectorXd dq = dq_rad != nullptr ? Eigen::VectorXd(dq_rad->col(which[r]))
+                                                 : Eigen::VectorXd();
+    design_rows(chain, m, links, true, joints_rad.col(which[r]), dq_rad != nullptr ? &dq : nullptr,
                 a.middleRows(3 * static_cast<Eigen::Index>(r), 3));
   }
   return a;
 }
 
-// The fitted coefficients into the terms: joint functions, then the links' rotations.
-void store(JointRotationTerms& m, bool links, const Eigen::VectorXd& c, int n_joints) {
+// The fitted coefficients into the terms: joint functions, the links' rotations, the constant.
+void store(JointRotationTerms& m, bool links, bool scaled, const Eigen::VectorXd& c,
+           int n_joints) {
   const Eigen::Index joint_columns = n_joints * (m.degree + 1);
   m.coefficients = c.head(joint_columns);
-  m.link_rotations_rad = links ? Eigen::VectorXd(c.tail(3 * n_joints)) : Eigen::VectorXd();
+  m.link_rotations_rad =
+      links ? Eigen::VectorXd(c.segment(joint_columns, 3 * n_joints)) : Eigen::VectorXd();
+  m.position_joint_scales =
+      scaled ? Eigen::VectorXd(c.segment(joint_columns + (links ? 3 * n_joints : 0), n_joints))
+             : Eigen::VectorXd();
+  m.constant_rad = c.tail<3>();
 }
 
 Eigen::VectorXd coefficients_of(const JointRotationTerms& m) {
-  Eigen::VectorXd c(m.coefficients.size() + m.link_rotations_rad.size());
-  c << m.coefficients, m.link_rotations_rad;
+  Eigen::VectorXd c(m.coefficients.size() + m.link_rotations_rad.size() +
+                    m.position_joint_scales.size());
+  c << m.coefficients, m.link_rotations_rad, m.position_joint_scales;
   return c;
 }
 
@@ -88,28 +117,55 @@ Eigen::VectorXd targets(const Points3& g, const std::vector<Eigen::Index>& which
   return b;
 }
 
-// Least squares on unit-norm columns, minimum norm (SVD): singular values below
-// kRelativeRankTolerance of the largest are dropped, so near-redundant combinations stay small.
-Eigen::VectorXd solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b) {
-  Eigen::VectorXd scale = Eigen::VectorXd::Zero(a.cols());
-  for (Eigen::Index c = 0; c < a.cols(); ++c) {
-    const double norm = a.col(c).norm();
-    scale(c) = norm > 0.0 ? 1.0 / norm : 0.0;
+// Least squares on unit-norm columns, minimum norm by SVD, once per design; solution() gives
+// the coefficients that keep the singular values above a relative threshold. Jacobi, not
+// divide-and-conquer: Eigen 3.4's BDCSVD crashed on some of these designs (a fixed tool
+// orientation's exactly repeated columns).
+class TruncatedSvd {
+ public:
+  TruncatedSvd(const Eigen::MatrixXd& a, const Eigen::VectorXd& b)
+      : scale_(Eigen::VectorXd::Zero(a.cols())) {
+    for (Eigen::Index c = 0; c < a.cols(); ++c) {
+      const double norm = a.col(c).norm();
+      scale_(c) = norm > 0.0 ? 1.0 / norm : 0.0;
+    }
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a * scale_.asDiagonal(),
+                                             Eigen::ComputeThinU | Eigen::ComputeThinV);
+    s_ = svd.singularValues();
+    v_ = svd.matrixV();
+    ub_ = svd.matrixU().transpose() * b;
   }
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a * scale.asDiagonal(),
-                                        Eigen::ComputeThinU | Eigen::ComputeThinV);
-  svd.setThreshold(kRelativeRankTolerance);
-  return scale.asDiagonal() * svd.solve(b);
-}
+  [[nodiscard]] Eigen::VectorXd solution(double relative_threshold) const {
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(s_.size());
+    const double largest = s_.size() > 0 ? s_(0) : 0.0;
+    for (Eigen::Index i = 0; i < s_.size(); ++i) {
+      if (s_(i) > relative_threshold * largest && s_(i) > 0.0) y(i) = ub_(i) / s_(i);
+    }
+    return scale_.asDiagonal() * (v_ * y);
+  }
+  [[nodiscard]] int rank(double relative_threshold) const {
+    const double largest = s_.size() > 0 ? s_(0) : 0.0;
+    return static_cast<int>((s_.array() > relative_threshold * largest).count());
+  }
+
+ private:
+  Eigen::VectorXd scale_;
+  Eigen::VectorXd s_{};
+  Eigen::MatrixXd v_{};
+  Eigen::VectorXd ub_{};
+};
 
 }  // namespace
 
 void validate_joint_rotation(const JointRotationTerms& t, int n_joints) {
   VRREG_THROW_UNLESS(t.degree >= -1 && t.degree <= 40, "joint rotation: degree " << t.degree);
+  VRREG_THROW_UNLESS(t.constant_rad.allFinite(), "joint rotation: the constant is not finite");
   VRREG_THROW_UNLESS(
       (t.link_rotations_rad.size() == 0 || t.link_rotations_rad.size() == 3 * n_joints) &&
-          t.link_rotations_rad.allFinite(),
-      "joint rotation: link rotations do not fit " << n_joints << " joints");
+          t.link_rotations_rad.allFinite() &&
+          (t.position_joint_scales.size() == 0 || t.position_joint_scales.size() == n_joints) &&
+          t.position_joint_scales.allFinite(),
+      "joint rotation: link rotations or joint scales do not fit " << n_joints << " joints");
   if (t.degree < 0) {
     VRREG_THROW_UNLESS(t.coefficients.size() == 0, "joint rotation: coefficients without a degree");
     return;
@@ -123,22 +179,27 @@ void validate_joint_rotation(const JointRotationTerms& t, int n_joints) {
 
 Eigen::Vector3d joint_rotation_rad(const JointRotationTerms& terms,
                                    const kinematics::SerialChain& chain,
-                                   const Eigen::Ref<const Eigen::VectorXd>& q_rad) {
+                                   const Eigen::Ref<const Eigen::VectorXd>& q_rad,
+                                   const Eigen::VectorXd* dq_rad) {
   const bool links = terms.link_rotations_rad.size() > 0;
-  if (terms.degree < 0 && !links) return Eigen::Vector3d::Zero();
-  Eigen::MatrixXd rows(3, n_columns(terms, chain.n_joints(), links));
-  design_rows(chain, terms, links, q_rad, rows);
-  return rows * coefficients_of(terms);
+  const bool scaled = terms.position_joint_scales.size() > 0;
+  if (terms.degree < 0 && !links && !scaled) return terms.constant_rad;
+  VRREG_THROW_UNLESS(!scaled || (dq_rad != nullptr && dq_rad->size() == q_rad.size()),
+                     "joint rotation: the positions' joint-angle errors are needed");
+  Eigen::MatrixXd rows(3, n_columns(terms, chain.n_joints(), links, false, scaled));
+  design_rows(chain, terms, links, false, q_rad, scaled ? dq_rad : nullptr, rows);
+  return rows * coefficients_of(terms) + terms.constant_rad;
 }
 
-JointRotationTerms fit_joint_rotation(const kinematics::SerialChain& chain,
-                                      const Eigen::MatrixXd& joints_rad, const Points3& g_robot_rad,
-                                      int folds, std::uint64_t seed) {
+JointRotationFit fit_joint_rotation(const kinematics::SerialChain& chain,
+                                    const Eigen::MatrixXd& joints_rad, const Points3& g_robot_rad,
+                                    const Eigen::MatrixXd* dq_rad, int folds, std::uint64_t seed) {
   const Eigen::Index n = g_robot_rad.cols();
   VRREG_THROW_UNLESS(joints_rad.cols() == n && joints_rad.rows() == chain.n_joints() && folds >= 2,
                      "joint rotation: " << joints_rad.rows() << " x " << joints_rad.cols()
                                         << " joints for " << n << " residuals");
-  JointRotationTerms m;
+  JointRotationFit out;
+  JointRotationTerms& m = out.terms;
   m.q_lo_rad = joints_rad.rowwise().minCoeff();
   m.q_hi_rad = joints_rad.rowwise().maxCoeff();
   // Folds from a seeded shuffle: the same fiducials, the same choice.
@@ -146,45 +207,67 @@ JointRotationTerms fit_joint_rotation(const kinematics::SerialChain& chain,
   std::iota(order.begin(), order.end(), Eigen::Index{0});
   Random rng(seed);
   for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
-  double best_rms = std::numeric_limits<double>::infinity();
-  int best_degree = -1;
-  bool best_links = false;
+  struct Candidate {
+    double rms_rad;
+    int degree;
+    bool links;
+    std::size_t threshold;
+    Eigen::Index columns;
+  };
+  std::vector<Candidate> candidates;
   for (const bool links : {false, true}) {
     for (const int degree : kDegrees) {
       m.degree = degree;
-      const Eigen::Index columns = n_columns(m, chain.n_joints(), links);
+      const Eigen::Index columns = n_columns(m, chain.n_joints(), links, true, dq_rad != nullptr);
       if (3 * n < 2 * (columns + 1)) break;  // too few equations for this degree
-      double sum_sq = 0.0;
+      std::array<double, kThresholds> sum_sq{};
       for (int fold = 0; fold < folds; ++fold) {
         std::vector<Eigen::Index> train, test;
         for (std::size_t r = 0; r < order.size(); ++r)
           (static_cast<int>(r % static_cast<std::size_t>(folds)) == fold ? test : train)
               .push_back(order[r]);
+        const TruncatedSvd svd(design(chain, m, links, joints_rad, dq_rad, train),
+                               targets(g_robot_rad, train));
+        const Eigen::MatrixXd a_test = design(chain, m, links, joints_rad, dq_rad, test);
         const Eigen::VectorXd b_test = targets(g_robot_rad, test);
-        if (columns == 0) {
-          sum_sq += b_test.squaredNorm();
-          continue;
+        for (std::size_t t = 0; t < kThresholds; ++t) {
+          sum_sq[t] += (a_test * svd.solution(kRelativeThresholds[t]) - b_test).squaredNorm();
         }
-        const Eigen::VectorXd c =
-            solve(design(chain, m, links, joints_rad, train), targets(g_robot_rad, train));
-        sum_sq += (design(chain, m, links, joints_rad, test) * c - b_test).squaredNorm();
       }
-      const double rms = std::sqrt(sum_sq / static_cast<double>(n));
-      if (rms < best_rms) {
-        best_rms = rms;
-        best_degree = degree;
-        best_links = links;
+      for (std::size_t t = 0; t < kThresholds; ++t) {
+        candidates.push_back(
+            {std::sqrt(sum_sq[t] / static_cast<double>(n)), degree, links, t, columns});
       }
     }
   }
+  // The simplest model within 1 % of the best cross-validated RMS: the most singular values
+  // dropped, then the fewest columns. Near-ties otherwise go to combinations kept at tiny
+  // singular values, which cancel to radians at the fiducials and nowhere else.
+  double best_rms = std::numeric_limits<double>::infinity();
+  for (const Candidate& c : candidates) best_rms = std::min(best_rms, c.rms_rad);
+  const Candidate* chosen = nullptr;
+  for (const Candidate& c : candidates) {
+    if (c.rms_rad > kNearTie * best_rms) continue;
+    if (chosen == nullptr || c.threshold > chosen->threshold ||
+        (c.threshold == chosen->threshold && c.columns < chosen->columns)) {
+      chosen = &c;
+    }
+  }
+  out.cv_rms_rad = chosen->rms_rad;
+  const int best_degree = chosen->degree;
+  const bool best_links = chosen->links;
+  const double best_threshold = kRelativeThresholds[chosen->threshold];
   m.degree = best_degree;
-  if (m.degree < 0 && !best_links) return m;
+  out.relative_threshold = best_threshold;
   std::vector<Eigen::Index> all(static_cast<std::size_t>(n));
   std::iota(all.begin(), all.end(), Eigen::Index{0});
-  store(m, best_links,
-        solve(design(chain, m, best_links, joints_rad, all), targets(g_robot_rad, all)),
-        chain.n_joints());
-  return m;
+  const TruncatedSvd svd(design(chain, m, best_links, joints_rad, dq_rad, all),
+                         targets(g_robot_rad, all));
+  out.columns = static_cast<int>(n_columns(m, chain.n_joints(), best_links, true, dq_rad != nullptr));
+  out.rank = svd.rank(best_threshold);
+  store(m, best_links, dq_rad != nullptr, svd.solution(best_threshold), chain.n_joints());
+  if (m.degree < 0) m.coefficients.resize(0);
+  return out;
 }
 
 }  // namespace vrreg::detail

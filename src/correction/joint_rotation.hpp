@@ -17,20 +17,34 @@
 namespace vrreg::detail {
 
 /// g(q) [rad, robot frame] of `terms` on `chain` (the nominal arm to the marker).
+/// `dq_rad`: the positions' joint-angle errors at q, needed when the terms scale them.
 Eigen::Vector3d joint_rotation_rad(const JointRotationTerms& terms,
                                    const kinematics::SerialChain& chain,
-                                   const Eigen::Ref<const Eigen::VectorXd>& q_rad);
+                                   const Eigen::Ref<const Eigen::VectorXd>& q_rad,
+                                   const Eigen::VectorXd* dq_rad = nullptr);
 
 /// Throws InputError when the terms' sizes do not fit `n_joints`.
 void validate_joint_rotation(const JointRotationTerms& terms, int n_joints);
 
-/// Fits g to `g_robot_rad` (3 x J) at joints `joints_rad` (n x J), choosing the degree among
-/// -1 (none), 0, 1, 2, 4, 6, 8, with or without the links' rotations, by `folds`-fold
-/// cross-validation (seeded shuffle); least squares by SVD, minimum norm (the links' rotations
-/// about their joints' axes repeat the joint functions' offsets, and near-redundant
-/// combinations must stay small).
-JointRotationTerms fit_joint_rotation(const kinematics::SerialChain& chain,
-                                      const Eigen::MatrixXd& joints_rad, const Points3& g_robot_rad,
-                                      int folds = 5, std::uint64_t seed = 1);
+/// What fit_joint_rotation chose, with its cross-validated RMS and the combinations it kept.
+struct JointRotationFit {
+  JointRotationTerms terms{};
+  double cv_rms_rad = 0.0;  ///< RMS angle of the held-out fiducials' g - prediction [rad]
+  int columns = 0;          ///< the chosen design's columns (the constant's 3 included)
+  int rank = 0;             ///< combinations kept: the others were not identifiable
+  double relative_threshold = 0.0;  ///< singular values kept above this share of the largest
+};
+
+/// Fits g to `g_robot_rad` (3 x J) at joints `joints_rad` (n x J) jointly with a constant
+/// rotation (left to the caller's mean residual), choosing the degree among -1 (none), 0, 1, 2,
+/// 4, 6, 8, with or without the links' rotations, and the singular values kept (truncated SVD,
+/// minimum norm: a fixed tool orientation makes many combinations indistinguishable) by
+/// `folds`-fold cross-validation (seeded shuffle).
+/// `dq_rad` (n x J, when given): the positions' joint-angle errors at the fiducials, each joint's
+/// along its axis a column of its own (PositionRotation::kScaledJointAngles).
+JointRotationFit fit_joint_rotation(const kinematics::SerialChain& chain,
+                                    const Eigen::MatrixXd& joints_rad, const Points3& g_robot_rad,
+                                    const Eigen::MatrixXd* dq_rad = nullptr, int folds = 5,
+                                    std::uint64_t seed = 1);
 
 }  // namespace vrreg::detail

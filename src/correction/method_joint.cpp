@@ -61,8 +61,14 @@ class JointMethod final : public FittedMethod {
   }
 
   [[nodiscard]] std::optional<Eigen::Vector3d> rotation_error_rad(
+      const Eigen::Ref<const Eigen::VectorXd>& joints_rad, bool joint_angles_only) const override {
+    return joint_angles_only ? model_.predict_joint_angle_rotation_rad(joints_rad)
+                             : model_.predict_rotation_rad(joints_rad);
+  }
+
+  [[nodiscard]] std::optional<Eigen::VectorXd> joint_angle_errors_rad(
       const Eigen::Ref<const Eigen::VectorXd>& joints_rad) const override {
-    return model_.predict_rotation_rad(joints_rad);
+    return Eigen::VectorXd(model_.joint_angle_errors_rad(joints_rad));
   }
 
   void check_query(const MethodQuery& query) const override {

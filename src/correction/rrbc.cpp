@@ -46,6 +46,8 @@ const char* to_string(StencilStatus status) {
       return "extrapolated";
     case StencilStatus::kTooFewFiducials:
       return "too few fiducials";
+    case StencilStatus::kNotBetterThanNone:
+      return "correction not better than none";
   }
   return "unknown";
 }

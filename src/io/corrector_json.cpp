@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "corrector_json.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <limits>
 
 #include "base64_doubles.hpp"
@@ -221,9 +225,162 @@ MethodState read_state(const json& item, const std::string& path, const std::str
   return state;
 }
 
+// FNV-1a, 64 bits: a fingerprint against edits, not against an adversary (who could rewrite it).
+class Fnv1a64 {
+ public:
+  void bytes(const void* data, std::size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) hash_ = (hash_ ^ p[i]) * 0x100000001b3ULL;
+  }
+  void tag(char c) { bytes(&c, 1); }
+  void text(const std::string& s) {
+    const std::uint64_t n = s.size();
+    bytes(&n, sizeof n);
+    bytes(s.data(), s.size());
+  }
+  [[nodiscard]] std::string hex() const {
+    char out[17];
+    std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(hash_));
+    return out;
+  }
+
+ private:
+  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+};
+
+// Members in key order (an ordered_json keeps the writer's order, a json sorts), numbers by their
+// value as a double (the text of a number read back may differ, its value does not).
+template <typename Json>
+void fingerprint_into(const Json& value, Fnv1a64& h) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::object: {
+      std::vector<std::pair<const std::string*, const Json*>> members;
+      members.reserve(value.size());
+      for (auto it = value.begin(); it != value.end(); ++it) members.emplace_back(&it.key(), &*it);
+      std::sort(members.begin(), members.end(),
+                [](const auto& a, const auto& b) { return *a.first < *b.first; });
+      h.tag('{');
+      for (const auto& [key, member] : members) {
+        h.text(*key);
+        fingerprint_into(*member, h);
+      }
+      h.tag('}');
+      return;
+    }
+    case nlohmann::json::value_t::array:
+      h.tag('[');
+      for (const auto& item : value) fingerprint_into(item, h);
+      h.tag(']');
+      return;
+    case nlohmann::json::value_t::string:
+      h.tag('s');
+      h.text(value.template get_ref<const std::string&>());
+      return;
+    case nlohmann::json::value_t::boolean:
+      h.tag(value.template get<bool>() ? 't' : 'f');
+      return;
+    case nlohmann::json::value_t::number_integer:
+    case nlohmann::json::value_t::number_unsigned:
+    case nlohmann::json::value_t::number_float: {
+      h.tag('n');
+      const double v = value.template get<double>();
+      const std::uint64_t bits = std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v);
+      h.bytes(&bits, sizeof bits);
+      return;
+    }
+    default:
+      h.tag('0');  // null, and what a model never holds
+      return;
+  }
+}
+
+template <typename Json>
+std::string fingerprint_of(const Json& value) {
+  Fnv1a64 h;
+  fingerprint_into(value, h);
+  return h.hex();
+}
+
+// A key only one method's state holds: a state under another method's name is refused.
+struct StateSignature {
+  InterpolationMethod method;
+  const char* key;
+};
+constexpr StateSignature kStateSignatures[] = {
+    {InterpolationMethod::kKriging, "kernel"},
+    {InterpolationMethod::kRbf, "polynomial_degree"},
+    {InterpolationMethod::kJoint, "joint_degrees"},
+    {InterpolationMethod::kGrid, "node_fiducial"},
+};
+
+void check_state_is_the_methods(const json& state, InterpolationMethod method,
+                                const std::string& path, const JsonFields& f) {
+  for (const StateSignature& s : kStateSignatures) {
+    const bool present = state.contains(s.key);
+    if (s.method == method && !present) {
+      f.fail(join_path(path, "method"), std::string("says ") + to_string(method) +
+                                            " but the saved state lacks '" + s.key +
+                                            "', which every " + to_string(method) +
+                                            " state holds: not fitted as " + to_string(method));
+    }
+    if (s.method != method && present) {
+      f.fail(join_path(path, "method"), std::string("says ") + to_string(method) +
+                                            " but the saved state is " + to_string(s.method) +
+                                            "'s (it holds '" + s.key + "')");
+    }
+  }
+}
+
+// Kriging's length scales divide distances: zero, negative or non-finite ones are refused here,
+// naming the key, rather than where the model is first evaluated.
+void check_kriging_state(const json& state, const std::string& path, const JsonFields& f) {
+  for (const char* axis : {"x", "y", "z"}) {
+    const std::string key = std::string(axis) + ".length_m";
+    if (!state.contains(key)) continue;  // restore names a missing key
+    const json& value = state.at(key);
+    const std::string at = join_path(path, key);
+    std::vector<double> values;
+    if (value.is_object() && value.contains("values")) {
+      values = f.numbers(value, at, "values", -1);
+    } else if (value.is_number()) {
+      values = {value.get<double>()};
+    }
+    for (const double v : values) {
+      if (!(std::isfinite(v) && v > 0.0)) {
+        f.fail(at, "a length scale must be a positive number, found " + std::to_string(v));
+      }
+    }
+  }
+}
+
+void check_fitted_from(const json& item, const std::string& path, const SavedCorrector& saved,
+                       const JsonFields& f, const std::string& fiducials_fingerprint) {
+  if (!item.contains("fitted_from")) return;  // written before models carried it
+  const std::string at = join_path(path, "fitted_from");
+  const json& from = item.at("fitted_from");
+  f.require_object(from, at);
+  const std::string method = f.string(from, at, "method");
+  if (method != to_string(saved.method)) {
+    f.fail(join_path(path, "method"), std::string("says ") + to_string(saved.method) +
+                                          " but the corrector was fitted as " + method);
+  }
+  if (f.string(from, at, "fiducials_fnv1a64") != fiducials_fingerprint) {
+    f.fail("fiducials", "changed since the corrector was fitted on them (" +
+                            join_path(at, "fiducials_fnv1a64") + " differs): register again");
+  }
+  if (f.string(from, at, "state_fnv1a64") != fingerprint_of(item.at("state"))) {
+    f.fail(join_path(path, "state"), "changed since it was fitted (" +
+                                         join_path(at, "state_fnv1a64") +
+                                         " differs): register again");
+  }
+}
+
 }  // namespace
 
-ojson corrector_json(const SavedCorrector& saved) {
+std::string json_fingerprint(const nlohmann::json& value) { return fingerprint_of(value); }
+std::string json_fingerprint(const nlohmann::ordered_json& value) { return fingerprint_of(value); }
+
+ojson corrector_json(const SavedCorrector& saved, const std::string& fiducials_fingerprint) {
   ojson out = ojson::object();
   out["method"] = to_string(saved.method);
   out["requested"] = settings_json(saved.requested);
@@ -239,10 +396,18 @@ ojson corrector_json(const SavedCorrector& saved) {
   }
   if (saved.cross_validation) out["cross_validation"] = table_json(*saved.cross_validation);
   out["state"] = state_json(saved.state);
+  // What was fitted is checked when read back; a method that keeps no state (octuplet,
+  // scattered, trilinear) is rebuilt from the fiducials themselves.
+  if (!saved.state.arrays().empty() || !saved.state.texts().empty()) {
+    out["fitted_from"] = {{"method", to_string(saved.method)},
+                          {"fiducials_fnv1a64", fiducials_fingerprint},
+                          {"state_fnv1a64", fingerprint_of(out["state"])}};
+  }
   return out;
 }
 
-SavedCorrector read_corrector(const json& item, const std::string& path, const JsonFields& f) {
+SavedCorrector read_corrector(const json& item, const std::string& path, const JsonFields& f,
+                              const std::string& fiducials_fingerprint) {
   f.require_object(item, path);
   SavedCorrector out;
   out.method = read_method(item, path, "method", f);
@@ -278,12 +443,16 @@ SavedCorrector read_corrector(const json& item, const std::string& path, const J
     out.cross_validation =
         read_table(item.at("cross_validation"), join_path(path, "cross_validation"), f);
   }
-  out.state = read_state(f.member(item, path, "state"), join_path(path, "state"),
-                         to_string(out.method), f);
+  const json& state = f.member(item, path, "state");
+  out.state = read_state(state, join_path(path, "state"), to_string(out.method), f);
+  check_state_is_the_methods(state, out.method, path, f);
+  check_kriging_state(state, join_path(path, "state"), f);
+  check_fitted_from(item, path, out, f, fiducials_fingerprint);
   return out;
 }
 
-nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrector& saved) {
+nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrector& saved,
+                                                  const std::string& fiducials_fingerprint) {
   nlohmann::ordered_json out;
   out["method"] = to_string(saved.method);
   nlohmann::ordered_json mean = nlohmann::ordered_json::array();
@@ -291,7 +460,20 @@ nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrecto
     for (int c = 0; c < 3; ++c) mean.push_back(finite(saved.mean_residual(r, c), "mean residual"));
   out["mean_residual"] = std::move(mean);
   out["joint_rms_rad"] = finite(saved.joint_rms_rad, "joint rms");
-  if (saved.joint_terms.degree >= 0 || saved.joint_terms.link_rotations_rad.size() > 0) {
+  out["applied"] = saved.applied;
+  out["uncorrected_rms_rad"] = finite(saved.uncorrected_rms_rad, "uncorrected rms");
+  out["cv_rms_rad"] = finite(saved.cv_rms_rad, "cross-validated rms");
+  nlohmann::ordered_json table = nlohmann::ordered_json::array();
+  for (const OrientationCvRow& row : saved.cross_validation) {
+    table.push_back({{"method", to_string(row.method)},
+                     {"applicable", row.applicable},
+                     {"note", row.note},
+                     {"rms_rad", finite(row.rms_rad, "cross-validated rms")},
+                     {"n_predicted", row.n_predicted}});
+  }
+  out["cross_validation"] = std::move(table);
+  if (saved.method == InterpolationMethod::kJoint || saved.joint_terms.degree >= 0 ||
+      saved.joint_terms.link_rotations_rad.size() > 0) {
     const JointRotationTerms& t = saved.joint_terms;
     const auto list = [](const Eigen::VectorXd& v) {
       nlohmann::ordered_json a = nlohmann::ordered_json::array();
@@ -305,13 +487,23 @@ nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrecto
     if (t.link_rotations_rad.size() > 0) {
       out["joint_terms"]["link_rotations_rad"] = list(t.link_rotations_rad);
     }
+    out["joint_terms"]["position_rotation"] = to_string(t.position_rotation);
+    out["joint_terms"]["constant_rad"] = {finite(t.constant_rad.x(), "joint terms"),
+                                          finite(t.constant_rad.y(), "joint terms"),
+                                          finite(t.constant_rad.z(), "joint terms")};
+    if (t.position_joint_scales.size() > 0) {
+      out["joint_terms"]["position_joint_scales"] = list(t.position_joint_scales);
+    }
+    out["joint_terms"]["columns"] = t.columns;
+    out["joint_terms"]["rank"] = t.rank;
   }
-  if (saved.tangent) out["tangent"] = corrector_json(*saved.tangent);
+  if (saved.tangent) out["tangent"] = corrector_json(*saved.tangent, fiducials_fingerprint);
   return out;
 }
 
 SavedOrientationCorrector read_orientation_corrector(const json& item, const std::string& path,
-                                                     const JsonFields& f) {
+                                                     const JsonFields& f,
+                                                     const std::string& fiducials_fingerprint) {
   f.require_object(item, path);
   SavedOrientationCorrector out;
   out.method = read_method(item, path, "method", f);
@@ -320,6 +512,37 @@ SavedOrientationCorrector read_orientation_corrector(const json& item, const std
     for (int c = 0; c < 3; ++c) out.mean_residual(r, c) = mean[static_cast<std::size_t>(3 * r + c)];
   out.joint_rms_rad = f.number(item, path, "joint_rms_rad");
   if (out.joint_rms_rad < 0.0) f.fail(join_path(path, "joint_rms_rad"), "negative");
+  // Files written before the orientations' own cross-validation: applied, figures not known.
+  const auto flag = [&](const json& object, const std::string& at, const char* key) {
+    const json& v = f.member(object, at, key);
+    if (!v.is_boolean()) f.fail(join_path(at, key), "expected true or false");
+    return v.get<bool>();
+  };
+  if (item.contains("applied")) out.applied = flag(item, path, "applied");
+  for (const auto& [key, value] : {std::pair{"uncorrected_rms_rad", &out.uncorrected_rms_rad},
+                                   std::pair{"cv_rms_rad", &out.cv_rms_rad}}) {
+    if (!item.contains(key)) continue;
+    *value = f.number(item, path, key);
+    if (*value < 0.0) f.fail(join_path(path, key), "negative");
+  }
+  if (item.contains("cross_validation")) {
+    const std::string at = join_path(path, "cross_validation");
+    const json& rows = item.at("cross_validation");
+    if (!rows.is_array() || rows.size() > 16) f.fail(at, "expected an array of at most 16 rows");
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const std::string row_at = at + "[" + std::to_string(i) + "]";
+      f.require_object(rows[i], row_at);
+      OrientationCvRow row;
+      row.method = read_method(rows[i], row_at, "method", f);
+      row.applicable = flag(rows[i], row_at, "applicable");
+      row.note = f.string(rows[i], row_at, "note");
+      row.rms_rad = f.number(rows[i], row_at, "rms_rad");
+      if (row.rms_rad < 0.0) f.fail(join_path(row_at, "rms_rad"), "negative");
+      row.n_predicted = f.integer(rows[i], row_at, "n_predicted");
+      if (row.n_predicted < 0) f.fail(join_path(row_at, "n_predicted"), "negative");
+      out.cross_validation.push_back(std::move(row));
+    }
+  }
   if (item.contains("joint_terms")) {
     const std::string at = join_path(path, "joint_terms");
     const json& t = item.at("joint_terms");
@@ -336,9 +559,31 @@ SavedOrientationCorrector read_orientation_corrector(const json& item, const std
     if (t.contains("link_rotations_rad")) {
       out.joint_terms.link_rotations_rad = vector("link_rotations_rad");
     }
+    if (t.contains("constant_rad")) {
+      const std::vector<double> c = f.numbers(t, at, "constant_rad", 3);
+      out.joint_terms.constant_rad = Eigen::Vector3d(c[0], c[1], c[2]);
+    }
+    if (t.contains("position_joint_scales")) {
+      out.joint_terms.position_joint_scales = vector("position_joint_scales");
+    }
+    if (t.contains("position_rotation")) {  // older files: the whole rotation
+      try {
+        out.joint_terms.position_rotation =
+            parse_position_rotation(f.string(t, at, "position_rotation"));
+      } catch (const InputError& e) {
+        f.fail(join_path(at, "position_rotation"), e.what());
+      }
+    }
+    for (const auto& [key, value] : {std::pair{"columns", &out.joint_terms.columns},
+                                     std::pair{"rank", &out.joint_terms.rank}}) {
+      if (!t.contains(key)) continue;
+      *value = f.integer(t, at, key);
+      if (*value < 0 || *value > 10000) f.fail(join_path(at, key), "out of range");
+    }
   }
   if (item.contains("tangent")) {
-    out.tangent = read_corrector(item.at("tangent"), join_path(path, "tangent"), f);
+    out.tangent =
+        read_corrector(item.at("tangent"), join_path(path, "tangent"), f, fiducials_fingerprint);
   } else if (out.method != InterpolationMethod::kJoint) {
     f.fail(join_path(path, "tangent"), "missing (every method but joint has one)");
   }

@@ -11,22 +11,34 @@
 
 namespace vrreg::io::detail {
 
+/// A fingerprint of a JSON value: FNV-1a (64 bits, 16 hex digits) over its members in key order
+/// and its numbers' values, so that a value written and read back keeps it.
+std::string json_fingerprint(const nlohmann::json& value);
+std::string json_fingerprint(const nlohmann::ordered_json& value);
+
 /// {"method", "requested": {method, cube_m, match_tolerance_m}, "nearest_configuration",
 /// "cv_folds", "cv_seed", "sd_source", "cv_rms_m", "cv_squared_error_m2" (null where not
 /// predicted), "cross_validation" (auto: the table without times), "state": {key: number, text
-/// or {"shape": [rows, cols], "values": column-major}}}.
-nlohmann::ordered_json corrector_json(const SavedCorrector& saved);
+/// or {"shape": [rows, cols], "values": column-major}}, "fitted_from": {"method",
+/// "fiducials_fnv1a64" (`fiducials_fingerprint`), "state_fnv1a64"}}.
+nlohmann::ordered_json corrector_json(const SavedCorrector& saved,
+                                      const std::string& fiducials_fingerprint);
 
-/// Reads what corrector_json writes at key path `path`; errors name the file and the key.
+/// Reads what corrector_json writes at key path `path`; errors name the file and the key. The
+/// state must be the method's (its keys), kriging's length scales positive, and, when the file
+/// says what the corrector was fitted from, the method, `fiducials_fingerprint` (of the file's
+/// fiducials) and the state's fingerprint must be the ones written.
 SavedCorrector read_corrector(const nlohmann::json& item, const std::string& path,
-                              const JsonFields& f);
+                              const JsonFields& f, const std::string& fiducials_fingerprint);
 
 /// The "orientation_corrector" member (rigid-body markers): {"method", "mean_residual" (9
 /// numbers, row-major), "joint_rms_rad", "tangent" (as corrector_json; absent for joint)}.
-nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrector& saved);
+nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrector& saved,
+                                                  const std::string& fiducials_fingerprint);
 
 /// Reads what orientation_corrector_json writes at key path `path`.
 SavedOrientationCorrector read_orientation_corrector(const nlohmann::json& item,
-                                                     const std::string& path, const JsonFields& f);
+                                                     const std::string& path, const JsonFields& f,
+                                                     const std::string& fiducials_fingerprint);
 
 }  // namespace vrreg::io::detail

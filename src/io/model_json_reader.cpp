@@ -267,8 +267,13 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
   if (doc.contains("robot")) model.robot = detail::read_chain(doc.at("robot"), "robot", f);
   detail::read_monitoring(doc, f, u, model);
   check_joint_model(model, f);
+  const std::string fiducials_fingerprint =
+      doc.contains("corrector") || doc.contains("orientation_corrector")
+          ? detail::json_fingerprint(fiducials)
+          : "";
   if (doc.contains("corrector")) {
-    const SavedCorrector saved = detail::read_corrector(doc.at("corrector"), "corrector", f);
+    const SavedCorrector saved =
+        detail::read_corrector(doc.at("corrector"), "corrector", f, fiducials_fingerprint);
     try {
       model.validate();
       model.corrector = restore_corrector(model, saved);
@@ -280,7 +285,7 @@ RegistrationModel parse_model_json(const std::string& text, const std::string& s
   }
   if (doc.contains("orientation_corrector")) {
     const SavedOrientationCorrector saved = detail::read_orientation_corrector(
-        doc.at("orientation_corrector"), "orientation_corrector", f);
+        doc.at("orientation_corrector"), "orientation_corrector", f, fiducials_fingerprint);
     try {
       model.orientation_corrector = restore_orientation_corrector(model, saved);
     } catch (const FileError&) {

@@ -144,12 +144,17 @@ std::string format_model_json(const RegistrationModel& model) {
     fiducials.push_back(fiducial_json(
         model.fiducials[j], model.corrections_sensor_m.col(static_cast<Eigen::Index>(j))));
   }
+  // The correctors were fitted on these fiducials: the reader refuses them once they changed.
+  const std::string fiducials_fingerprint =
+      model.corrector || model.orientation_corrector ? detail::json_fingerprint(fiducials) : "";
   out["fiducials"] = std::move(fiducials);
   detail::add_monitoring_json(model, out);
-  if (model.corrector) out["corrector"] = detail::corrector_json(model.corrector->save());
+  if (model.corrector) {
+    out["corrector"] = detail::corrector_json(model.corrector->save(), fiducials_fingerprint);
+  }
   if (model.orientation_corrector) {
-    out["orientation_corrector"] =
-        detail::orientation_corrector_json(model.orientation_corrector->save());
+    out["orientation_corrector"] = detail::orientation_corrector_json(
+        model.orientation_corrector->save(), fiducials_fingerprint);
   }
   try {
     return out.dump(2) + "\n";

@@ -158,7 +158,35 @@ nlohmann::json register_json(const RegisterResult& result) {
     j["cross_validation"] = cross_validation_json(*result.cross_validation);
     j["interpolation"] = to_string(model.interpolation.method);
   }
+  if (model.orientation_corrector) j["orientation"] = orientation_field_json(*model.orientation_corrector);
   add_strategy_json(model, result.relabelled, j);
+  return j;
+}
+
+nlohmann::json orientation_field_json(const OrientationCorrector& field) {
+  constexpr double kMrad = 1e3;
+  nlohmann::json j;
+  j["method"] = to_string(field.method());
+  j["applied"] = field.applied();
+  j["status"] = field.applied() ? "ok" : to_string(StencilStatus::kNotBetterThanNone);
+  j["describe"] = field.describe();
+  j["uncorrected_rms_angle_mrad"] = kMrad * field.uncorrected_rms_rad();
+  j["cv_rms_angle_mrad"] =
+      field.cv_rms_rad() > 0.0 ? nlohmann::json(kMrad * field.cv_rms_rad()) : nlohmann::json(nullptr);
+  nlohmann::json rows = nlohmann::json::array();
+  for (const OrientationCvRow& row : field.cross_validation()) {
+    nlohmann::json r;
+    r["method"] = to_string(row.method);
+    r["applicable"] = row.applicable;
+    if (row.applicable) {
+      r["rms_angle_mrad"] = kMrad * row.rms_rad;
+      r["n_predicted"] = row.n_predicted;
+    } else {
+      r["note"] = row.note;
+    }
+    rows.push_back(std::move(r));
+  }
+  j["cross_validation"] = std::move(rows);
   return j;
 }
 
@@ -230,6 +258,30 @@ nlohmann::json correct_json(const CorrectResult& result) {
   add_predicted_sd_json(c, std::nullopt, j);
   if (result.cross_validation)
     j["cross_validation"] = cross_validation_json(*result.cross_validation);
+  if (result.orientation) j["orientation"] = orientation_correction_json(*result.orientation);
+  return j;
+}
+
+nlohmann::json orientation_correction_json(const OrientationCorrection& o) {
+  constexpr double kMrad = 1e3;
+  nlohmann::json j;
+  j["interpolation"] = to_string(o.method_used);
+  j["n_corrected"] = std::ssize(o.status) - o.n_flagged;
+  j["n_flagged"] = o.n_flagged;
+  nlohmann::json statuses = nlohmann::json::object();
+  for (const StencilStatus s : o.status) {
+    const char* name = to_string(s);
+    statuses[name] = statuses.value(name, 0) + 1;
+  }
+  j["status_counts"] = std::move(statuses);
+  const PredictedSdSummary sd = summarize_predicted_sd(o.predicted_sd_rad);
+  if (sd.n > 0) {
+    j["predicted_angle_sd_mrad"] = {{"median", kMrad * sd.median_m}, {"max", kMrad * sd.max_m}};
+  }
+  j["angle_sd_limit_mrad"] = kMrad * o.sd_limit_rad;
+  std::size_t over = 0;
+  for (std::size_t t = 0; t < o.status.size(); ++t) over += o.sd_over_limit(t) ? 1 : 0;
+  j["n_angle_sd_over_limit"] = over;
   return j;
 }
 

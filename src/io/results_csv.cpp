@@ -116,12 +116,16 @@ namespace {
 std::string orientation_header(const CorrectResult& r) {
   if (!r.orientation) return "";
   return std::string(
-             ",robot_qx,robot_qy,robot_qz,robot_qw,rotation_x_mrad,rotation_y_mrad,"
-             "rotation_z_mrad") +
-         (r.orientation->predicted_sd_rad.size() > 0 ? ",predicted_angle_sd_mrad" : "");
+             ",orientation_status,robot_qx,robot_qy,robot_qz,robot_qw,rotation_x_mrad,"
+             "rotation_y_mrad,rotation_z_mrad") +
+         (r.orientation->predicted_sd_rad.size() > 0
+              ? ",predicted_angle_sd_mrad,angle_sd_over_limit"
+              : "");
 }
 
 void put_orientation(std::string& out, const OrientationCorrection& o, std::size_t k, int digits) {
+  out += ',';
+  out += to_string(o.status[k]);
   const Eigen::Quaterniond q(o.corrected_R_robot_marker[k]);
   for (int i = 0; i < 4; ++i) {  // x, y, z, w
     out += ',';
@@ -136,6 +140,7 @@ void put_orientation(std::string& out, const OrientationCorrection& o, std::size
     out += ',';
     if (std::isfinite(o.predicted_sd_rad(n)))
       out += format_general(1e3 * o.predicted_sd_rad(n), digits);
+    out += o.sd_over_limit(k) ? ",1" : ",0";
   }
 }
 

@@ -59,6 +59,28 @@ IkResult nearest_solution(const SerialChain& chain, const IkResult& all,
   return result;
 }
 
+IkResult inverse_kinematics_nearest(const SerialChain& chain, const Eigen::Isometry3d& T_base_tcp,
+                                    const JointRef& q_current_rad, std::optional<double> psi_rad,
+                                    JointNorm norm) {
+  chain.check_joints(q_current_rad, "nearest IK solution: current joints");
+  IkOptions all;
+  all.apply_joint_limits = false;
+  switch (chain.family()) {
+    case ChainFamily::kUr:
+      return ur_inverse_kinematics_nearest(chain, T_base_tcp, q_current_rad, norm);
+    case ChainFamily::kLwr:
+      return nearest_solution(chain, inverse_kinematics(chain, T_base_tcp, psi_rad, all),
+                              q_current_rad, norm);
+    case ChainFamily::kGeneric:
+      break;
+  }
+  NumericIkOptions numeric;
+  numeric.apply_joint_limits = false;
+  return nearest_solution(
+      chain, numeric_inverse_kinematics(chain, T_base_tcp, numeric, JointVector(q_current_rad)),
+      q_current_rad, norm);
+}
+
 std::optional<ConfigurationLabel> configuration_of(const SerialChain& chain,
                                                    const JointRef& q_rad) {
   switch (chain.family()) {

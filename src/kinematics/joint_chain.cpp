@@ -123,28 +123,19 @@ Eigen::Isometry3d joints_forward_kinematics(const std::vector<ChainJoint>& joint
   return t * T_last_tip;
 }
 
-SerialChain chain_from_joints(std::string name, const std::vector<ChainJoint>& joints,
-                              const Eigen::Isometry3d& T_last_tip) {
-  const std::size_t n = joints.size();
-  VRREG_THROW_UNLESS(
-      n >= 1 && n <= static_cast<std::size_t>(kMaxJoints),
-      "robot '" << name << "': a chain needs 1 to " << kMaxJoints << " moving joints, got " << n);
-  // Every joint's axis line at q = 0, in the base frame.
-  std::vector<Line> axes;
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  for (const ChainJoint& j : joints) {
-    VRREG_THROW_UNLESS(j.axis.allFinite() && j.axis.norm() > 1e-9,
-                       "robot '" << name << "': joint '" << j.name << "' has no axis direction ("
-                                 << j.axis.transpose() << ")");
-    t = t * j.T_parent_joint;
-    axes.push_back({t.translation(), (t.linear() * j.axis.normalized()).normalized()});
-  }
-  const Eigen::Isometry3d T_base_tip = t * T_last_tip;
+namespace {
 
+// The DH chain of `axes` (joint axis lines at q = 0, base frame) with frame 0's x along
+// `x0_sign` times the base's x (projected off axis 1).
+SerialChain dh_chain(std::string name, const std::vector<ChainJoint>& joints,
+                     const std::vector<Line>& axes, const Eigen::Isometry3d& T_base_tip,
+                     double x0_sign) {
+  const std::size_t n = joints.size();
   // Frame 0: on axis 1 at the foot of the base origin, x from the base's x.
   Eigen::Vector3d z = axes[0].direction;
   Eigen::Vector3d o = axes[0].point - axes[0].point.dot(z) * z;
-  Eigen::Vector3d x = perpendicular(Eigen::Vector3d::UnitX(), z, Eigen::Vector3d::UnitY());
+  Eigen::Vector3d x =
+      x0_sign * perpendicular(Eigen::Vector3d::UnitX(), z, Eigen::Vector3d::UnitY());
   const Eigen::Isometry3d T_base_dh0 = frame(o, x, z);
 
   std::vector<DhRow> rows;
@@ -181,6 +172,37 @@ SerialChain chain_from_joints(std::string name, const std::vector<ChainJoint>& j
     base = Eigen::Isometry3d::Identity();
   }
   return SerialChain(std::move(name), std::move(rows), std::move(limits), base, T_flange_tcp);
+}
+
+}  // namespace
+
+SerialChain chain_from_joints(std::string name, const std::vector<ChainJoint>& joints,
+                              const Eigen::Isometry3d& T_last_tip) {
+  const std::size_t n = joints.size();
+  VRREG_THROW_UNLESS(
+      n >= 1 && n <= static_cast<std::size_t>(kMaxJoints),
+      "robot '" << name << "': a chain needs 1 to " << kMaxJoints << " moving joints, got " << n);
+  // Every joint's axis line at q = 0, in the base frame.
+  std::vector<Line> axes;
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  for (const ChainJoint& j : joints) {
+    VRREG_THROW_UNLESS(j.axis.allFinite() && j.axis.norm() > 1e-9,
+                       "robot '" << name << "': joint '" << j.name << "' has no axis direction ("
+                                 << j.axis.transpose() << ")");
+    t = t * j.T_parent_joint;
+    axes.push_back({t.translation(), (t.linear() * j.axis.normalized()).normalized()});
+  }
+  const Eigen::Isometry3d T_base_tip = t * T_last_tip;
+  SerialChain chain = dh_chain(name, joints, axes, T_base_tip, 1.0);
+  // Every x after frame 0 follows frame 0's sign, and the UR and LWR 4+ structures fix the signs
+  // of the twists: a base frame turned half a turn about axis 1 (ROS-Industrial's base_link
+  // beside "base") gives the same arm with every twist negated. The other sign then gives the
+  // analytic IK, with the half turn in the base transform.
+  if (chain.family() == ChainFamily::kGeneric) {
+    SerialChain flipped = dh_chain(name, joints, axes, T_base_tip, -1.0);
+    if (flipped.family() != ChainFamily::kGeneric) return flipped;
+  }
+  return chain;
 }
 
 }  // namespace vrreg::kinematics

@@ -61,6 +61,18 @@ Eigen::Vector3d JointErrorModel::predict_rotation_rad(const JointRef& q_rad) con
                       forward_kinematics(state_->nominal, q_rad).linear().transpose());
 }
 
+Eigen::Vector3d JointErrorModel::predict_joint_angle_rotation_rad(const JointRef& q_rad) const {
+  state_->nominal.check_joints(q_rad, "joint error model prediction");
+  const JointVector q_actual = q_rad + joint_error_rad(*state_, state_->x, q_rad);
+  return rotation_log(forward_kinematics(state_->nominal, q_actual).linear() *
+                      forward_kinematics(state_->nominal, q_rad).linear().transpose());
+}
+
+JointVector JointErrorModel::joint_angle_errors_rad(const JointRef& q_rad) const {
+  state_->nominal.check_joints(q_rad, "joint error model prediction");
+  return joint_error_rad(*state_, state_->x, q_rad);
+}
+
 Points3 JointErrorModel::predict_m(const std::vector<JointVector>& q_rad) const {
   const SerialChain chain_x = perturbed_chain(*state_, state_->x);
   Points3 out(3, static_cast<Eigen::Index>(q_rad.size()));

@@ -54,7 +54,10 @@ std::optional<OrientationEvaluation> orientation_errors(std::optional<Orientatio
     const Eigen::Matrix3d R_commanded = set.locations[rows[i]].q_robot_marker->toRotationMatrix();
     out.unc_error_rad(k) = rotation_angle_rad(c->uncorrected_R_robot_marker[i], R_commanded);
     out.cor_error_rad(k) = rotation_angle_rad(c->corrected_R_robot_marker[i], R_commanded);
-    if (is_corrected(c->status[i])) corrected.push_back(k);
+    // A field not better than none answers every target uncorrected: those count as answered.
+    if (is_corrected(c->status[i]) || c->status[i] == StencilStatus::kNotBetterThanNone) {
+      corrected.push_back(k);
+    }
   }
   if (!corrected.empty()) {
     out.unc_rms_rad = root_mean_square(out.unc_error_rad(corrected));

@@ -72,13 +72,36 @@ CorrectorOptions corrector_options(const InterpolationSettings& settings,
   return options;
 }
 
+namespace {
+
+// The same arm as the model's: the same geometry, limits, base and tool, to the bit (the robot
+// a model was registered with, named again on the command line).
+bool same_robot(const kinematics::SerialChain& a, const kinematics::SerialChain& b) {
+  if (a.n_joints() != b.n_joints()) return false;
+  for (int i = 0; i < a.n_joints(); ++i) {
+    const kinematics::DhRow& r = a.row(i);
+    const kinematics::DhRow& s = b.row(i);
+    if (r.a_m != s.a_m || r.alpha_rad != s.alpha_rad || r.d_m != s.d_m ||
+        r.theta_offset_rad != s.theta_offset_rad || r.type != s.type ||
+        a.limit(i).lower_rad != b.limit(i).lower_rad ||
+        a.limit(i).upper_rad != b.limit(i).upper_rad) {
+      return false;
+    }
+  }
+  return a.T_base_dh0().matrix() == b.T_base_dh0().matrix() &&
+         a.T_flange_tcp().matrix() == b.T_flange_tcp().matrix();
+}
+
+}  // namespace
+
 Corrector corrector_for(const RegistrationModel& model, const CorrectorRequest& request) {
   const CorrectorOptions options =
       corrector_options(request.settings, request.strategy, request.norm);
   // A robot given now refits what depends on it: the joint-space model, and auto's choice.
   const bool robot_changes =
-      request.robot && (request.settings.method == InterpolationMethod::kJoint ||
-                        request.settings.method == InterpolationMethod::kAuto);
+      request.robot && !(model.robot && same_robot(*request.robot, *model.robot)) &&
+      (request.settings.method == InterpolationMethod::kJoint ||
+       request.settings.method == InterpolationMethod::kAuto);
   const auto data = [&] { return corrector_data(model, request.robot ? request.robot : model.robot); };
   if (model.corrector && !request.refit && !robot_changes && answers(*model.corrector, options)) {
     return request.exact ? model.corrector->exact(data()) : *model.corrector;

@@ -328,8 +328,10 @@ kinematics::SerialChain load_robot(const std::string& name_or_path) {
   if (std::optional<kinematics::SerialChain> builtin = kinematics::robot_by_name(name_or_path)) {
     return *std::move(builtin);
   }
+  // Anything by that name (a FIFO, a directory) is read as the file it was meant to be, and
+  // refused as what it is.
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(name_or_path, ec)) {
+  if (!std::filesystem::exists(name_or_path, ec)) {
     std::string names;
     for (const std::string& n : kinematics::builtin_robot_names()) {
       names += (names.empty() ? "" : ", ") + n;

@@ -1,17 +1,22 @@
 // SPDX-License-Identifier: Apache-2.0
-// URDF -> joint list -> DH chain. urdfdom parses the XML and links the tree (it refuses a link
-// with two parents, a missing link, a joint without limits where URDF requires them); it reports
-// why through console_bridge, which is captured here so that the error is one line naming the file.
+// URDF -> joint list -> DH chain. urdfdom parses the XML and links the tree (it refuses a missing
+// link, a joint without limits where URDF requires them); it reports why through console_bridge,
+// which is captured here so that the error is one line naming the file. What urdfdom lets through
+// is refused here: XML nested deeper than TinyXML's recursion survives, and a link with two
+// parents (urdfdom keeps the last joint in name order).
 #include "vrreg/robot_io/urdf_robot.hpp"
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cctype>
 #include <exception>
 #include <map>
 #include <mutex>
 #include <set>
+#include <string_view>
 #include <vector>
 
 #include "vrreg/core/check.hpp"
@@ -24,6 +29,10 @@ namespace {
 
 using kinematics::ChainJoint;
 using kinematics::JointType;
+
+// Element nesting a URDF may have (one has about 5: robot, link, visual, geometry, mesh); TinyXML
+// overflowed an 8 MB stack between 20 000 and 60 000 levels.
+constexpr int kMaxUrdfNesting = 256;
 
 // Keeps urdfdom's last error message instead of printing it.
 class CapturingHandler : public console_bridge::OutputHandler {
@@ -40,7 +49,84 @@ std::mutex& parse_mutex() {
   return m;
 }
 
+bool starts_with_at(const std::string& text, std::size_t i, std::string_view prefix) {
+  return text.compare(i, prefix.size(), prefix) == 0;
+}
+
+bool starts_with_xml_declaration(const std::string& text, std::size_t i) {
+  if (text.size() - i < 5 || text.compare(i, 2, "<?") != 0) return false;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (std::tolower(static_cast<unsigned char>(text[i + 2 + k])) != "xml"[k]) return false;
+  }
+  return true;
+}
+
+// The deepest element nesting TinyXML would recurse into, read as TinyXML reads the markup
+// (an element starts at '<' and a letter, '_' or a non-ASCII byte; attribute values are quoted
+// only right after '='; comments, CDATA, declarations and other <! or <? run to their end).
+// Never below TinyXML's depth: what it would misread the other way is refused instead.
+void check_nesting(const std::string& text, const std::string& source) {
+  const auto fail = [&](const std::string& why) { throw FileError(source, 0, why); };
+  const std::size_t n = text.size();
+  int depth = 0;
+  std::size_t i = 0;
+  const auto skip_past = [&](std::string_view end) {
+    const std::size_t at = text.find(end, i);
+    i = at == std::string::npos ? n : at + end.size();
+  };
+  while ((i = text.find('<', i)) != std::string::npos) {
+    if (starts_with_at(text, i, "<!--")) {
+      i += 4;
+      skip_past("-->");
+    } else if (starts_with_at(text, i, "<![CDATA[")) {
+      i += 9;
+      skip_past("]]>");
+    } else if (starts_with_at(text, i, "</")) {
+      depth = std::max(depth - 1, 0);
+      skip_past(">");
+    } else if (i + 1 < n &&
+               (std::isalpha(static_cast<unsigned char>(text[i + 1])) != 0 || text[i + 1] == '_' ||
+                static_cast<unsigned char>(text[i + 1]) >= 127)) {
+      // A start tag: to its '>' outside quoted attribute values.
+      bool after_equals = false;
+      char previous = '<';
+      for (++i; i < n && text[i] != '>'; ++i) {
+        const char c = text[i];
+        if ((c == '"' || c == '\'') && after_equals) {
+          const std::size_t close = text.find(c, i + 1);
+          i = close == std::string::npos ? n - 1 : close;
+          after_equals = false;
+          previous = c;
+          continue;
+        }
+        if (c == '=') {
+          after_equals = true;
+        } else if (c != ' ' && c != '\t' && c != '\r' && c != '\n') {
+          after_equals = false;
+        }
+        previous = c;
+      }
+      if (i >= n) break;
+      ++i;
+      if (previous != '/' && ++depth > kMaxUrdfNesting) {
+        fail("XML elements nest deeper than " + std::to_string(kMaxUrdfNesting) +
+             " levels; a URDF needs a few");
+      }
+    } else {
+      // A declaration inside an element could hide an end tag in a quoted value that TinyXML
+      // skips; no URDF has one there.
+      if (depth > 0 && starts_with_xml_declaration(text, i)) {
+        fail("an <?xml ...?> declaration inside an element");
+      }
+      skip_past(">");
+    }
+  }
+}
+
 urdf::ModelInterfaceSharedPtr parse_model(const std::string& xml, const std::string& source) {
+  // urdfdom's TinyXML recurses once per nesting level, in parsing and in freeing: a deep
+  // enough file overflows the stack.
+  check_nesting(xml, source);
   const std::lock_guard<std::mutex> lock(parse_mutex());
   CapturingHandler handler;
   console_bridge::useOutputHandler(&handler);
@@ -136,7 +222,20 @@ class ChainBuilder {
     return c;
   }
 
+  // urdfdom links a child to the last of its parent joints (in name order) and drops the others.
+  void check_single_parents() const {
+    std::map<std::string, std::string> parent_joint_of;
+    for (const auto& [name, joint] : model_.joints_) {
+      const auto [it, first] = parent_joint_of.emplace(joint->child_link_name, name);
+      if (!first) {
+        fail("link '" + joint->child_link_name + "' is the child of two joints ('" + it->second +
+             "' and '" + name + "'): a link has one parent in a URDF tree");
+      }
+    }
+  }
+
   kinematics::SerialChain build(const UrdfChainOptions& options) const {
+    check_single_parents();
     const urdf::LinkConstSharedPtr root = model_.getRoot();
     if (!root) fail("the URDF has no root link");
     const urdf::LinkConstSharedPtr tip =

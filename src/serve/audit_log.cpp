@@ -23,8 +23,9 @@ namespace {
 // an eighth of it.
 std::size_t flush_bytes(std::size_t max_bytes) { return std::min<std::size_t>(64u << 10, max_bytes / 8); }
 
+// Non-blocking: opening a FIFO for writing would otherwise wait for a reader (for ever, at start).
 int open_append(const std::string& path) {
-  return ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0640);
+  return ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NONBLOCK, 0640);
 }
 
 std::string mm3_text(const Eigen::Vector3d& v) {
@@ -45,9 +46,19 @@ AuditLog::AuditLog(AuditLogOptions options) : options_(std::move(options)) {
   if (options_.keep < 1) throw InputError("audit log: keep at least 1 rotated file");
   if (options_.max_bytes < 4096) throw InputError("audit log: rotate at 4096 bytes or more");
   fd_ = open_append(options_.path);
+  if (fd_ < 0 && errno == ENXIO) {  // a FIFO nobody reads
+    throw FileError(options_.path, 0, "not a regular file (a FIFO): the audit log must be a file");
+  }
   if (fd_ < 0) throw FileError(options_.path, 0, std::string("cannot open: ") + std::strerror(errno));
   struct stat st {};
-  if (::fstat(fd_, &st) == 0) file_bytes_ = static_cast<std::size_t>(st.st_size);
+  // Only a regular file can be rotated and keeps what is written (/dev/full takes nothing, a
+  // FIFO blocks when full): anything else is refused at start, not discovered in production.
+  if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd_);
+    fd_ = -1;
+    throw FileError(options_.path, 0, "not a regular file: the audit log must be a file");
+  }
+  file_bytes_ = static_cast<std::size_t>(st.st_size);
 }
 
 AuditLog::~AuditLog() {
@@ -81,6 +92,20 @@ void AuditLog::record(const std::string& client, const char* protocol,
             nlohmann::json(answer.reason).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   }
   line += "}\n";
+  const std::lock_guard lock(mutex_);
+  buffer_ += line;
+  if (buffer_.size() >= flush_bytes(options_.max_bytes)) write_locked();
+}
+
+void AuditLog::record_refusal(const std::string& client, const char* protocol, ReplyCode code,
+                              const std::string& reason) {
+  if (fd_ < 0) return;
+  std::string line = fmt::format(R"({{"time":"{}","client":"{}","protocol":"{}","status":)",
+                                 utc_now(), client, protocol);
+  line += nlohmann::json(to_string(code)).dump();
+  line += fmt::format(R"(,"code":{},"reason":)", static_cast<int>(code)) +
+          nlohmann::json(reason).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) +
+          "}\n";
   const std::lock_guard lock(mutex_);
   buffer_ += line;
   if (buffer_.size() >= flush_bytes(options_.max_bytes)) write_locked();

@@ -19,7 +19,8 @@ struct AuditLogOptions {
 
 class AuditLog {
  public:
-  /// Opens (appends to) options.path; throws FileError when it cannot be opened.
+  /// Opens (appends to) options.path; throws FileError when it cannot be opened or is not a
+  /// regular file (a FIFO, a device).
   explicit AuditLog(AuditLogOptions options);
   ~AuditLog();
   AuditLog(const AuditLog&) = delete;
@@ -31,6 +32,10 @@ class AuditLog {
   void record(const std::string& client, const char* protocol, const std::string& model_name,
               const std::string& model_sha256, const PointRequest& request,
               const PointAnswer& answer);
+  /// Appends one line for a request refused before it named a point (malformed, unauthorized,
+  /// over a bound): who sent it and why it was refused.
+  void record_refusal(const std::string& client, const char* protocol, ReplyCode code,
+                      const std::string& reason);
   /// Writes what is buffered and rotates when the file is full. Called every 100 ms by the service.
   void flush();
   /// The last write error, empty when none.

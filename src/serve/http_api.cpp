@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "line_protocol.hpp"
+#include "service.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/file_error.hpp"
 #include "vrreg/core/rotation.hpp"
@@ -103,7 +104,9 @@ json answer_object(const PointAnswer& a) {
     }
   } else {
     j["error"] = a.reason;
-    if (a.code == ReplyCode::kNotCorrectable) j["uncorrected_robot_mm"] = mm3_json(a.uncorrected_robot_mm);
+    if (a.code == ReplyCode::kNotCorrectable || a.code == ReplyCode::kTooFar) {
+      j["uncorrected_robot_mm"] = mm3_json(a.uncorrected_robot_mm);
+    }
   }
   return j;
 }
@@ -130,6 +133,12 @@ std::variant<HttpCorrectRequest, PointAnswer> parse_http_correct(std::string_vie
     if (const auto p = doc.find("points"); p != doc.end()) {
       out.batch = true;
       if (!p->is_array()) throw Refused{"points: expected an array"};
+      if (p->empty()) throw Refused{"points: an empty batch (give at least one point)"};
+      for (const auto& [key, value] : doc.items()) {
+        if (key != "model" && key != "points" && key != "extrapolate") {
+          throw Refused{"body: unknown key '" + key + "' beside points"};
+        }
+      }
       if (p->size() > max_batch) {
         return PointAnswer::refusal(ReplyCode::kLimit, "points: " + std::to_string(p->size()) +
                                                            " in one batch, at most " +
@@ -170,7 +179,8 @@ int http_status(ReplyCode code) {
     case ReplyCode::kUnknownModel: return 404;
     case ReplyCode::kLimit: return 413;
     case ReplyCode::kNotCorrectable:
-    case ReplyCode::kInput: return 422;
+    case ReplyCode::kInput:
+    case ReplyCode::kTooFar: return 422;
     case ReplyCode::kInternal: return 500;
   }
   return 500;
@@ -197,7 +207,7 @@ std::string batch_json(const std::vector<PointAnswer>& answers, const ModelIdent
 
 std::string health_json(const std::vector<std::shared_ptr<const ServedModel>>& models,
                         const std::vector<std::string>& reload_errors,
-                        const std::string& audit_error) {
+                        const std::string& audit_error, const ServiceStats& stats) {
   json j;
   j["status"] = "ready";
   json list = json::array();
@@ -213,11 +223,23 @@ std::string health_json(const std::vector<std::shared_ptr<const ServedModel>>& m
     m["n_fiducials"] = id.n_fiducials;
     m["predicts_sd"] = id.predicts_sd;
     m["corrects_orientation"] = id.corrects_orientation;
-    if (i < reload_errors.size() && !reload_errors[i].empty()) m["last_reload_error"] = reload_errors[i];
+    // Always there, null when the last reload (if any) succeeded: a client reads one shape.
+    m["last_reload_error"] = i < reload_errors.size() && !reload_errors[i].empty()
+                                 ? json(reload_errors[i])
+                                 : json(nullptr);
     list.push_back(std::move(m));
   }
   j["models"] = std::move(list);
   if (!audit_error.empty()) j["audit_log_error"] = audit_error;
+  j["counters"] = {{"corrections", stats.corrections},
+                   {"refusals", stats.refusals},
+                   {"malformed_requests", stats.malformed},
+                   {"unauthorized_requests", stats.unauthorized},
+                   {"limited_requests", stats.limited},
+                   {"connections", stats.connections},
+                   {"rejected_connections", stats.rejected_connections},
+                   {"open_line_connections", stats.open_line_connections},
+                   {"open_http_connections", stats.open_http_connections}};
   return dump(j);
 }
 

@@ -38,8 +38,12 @@ std::string answer_json(const PointAnswer& answer, const ModelIdentity* model);
 /// A batch's answers as {"model":..., "sha256":..., "results": [...]}.
 std::string batch_json(const std::vector<PointAnswer>& answers, const ModelIdentity& model);
 
-/// The health document: every served model and the last reload error of each.
+struct ServiceStats;
+
+/// The health document: every served model and the last reload error of each (null when none),
+/// and the service's counters (corrections, refusals, refused requests by kind, connections).
 std::string health_json(const std::vector<std::shared_ptr<const ServedModel>>& models,
-                        const std::vector<std::string>& reload_errors, const std::string& audit_error);
+                        const std::vector<std::string>& reload_errors,
+                        const std::string& audit_error, const ServiceStats& stats);
 
 }  // namespace vrreg::serve

@@ -85,7 +85,11 @@ bool valid_model_name(std::string_view name) {
 
 // A finite number within kMaxAbsMm; from_chars takes "nan" and "inf", the service does not.
 std::optional<double> number_of(std::string_view field) {
-  if (!field.empty() && field.front() == '+') field.remove_prefix(1);
+  if (!field.empty() && field.front() == '+') {
+    field.remove_prefix(1);
+    // from_chars would read the sign of "+-767.2" as the number's: two signs are a typing error.
+    if (!field.empty() && (field.front() == '-' || field.front() == '+')) return std::nullopt;
+  }
   double value = 0.0;
   const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
   if (error != std::errc() || end != field.data() + field.size() || !std::isfinite(value) ||

@@ -51,8 +51,46 @@ static asio::awaitable<void> send(LineConnection& c, const std::string& reply, b
   c.writing = false;
 }
 
+LineOutcome handle_line(Service::Impl& service, std::string_view line, LineState& state,
+                        const std::string& client) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  // The bound is on the request, whichever line end the client sends.
+  if (line.size() > service.options.max_line_bytes) {
+    service.refused_request(
+        client, "line", ReplyCode::kLimit,
+        "line over " + std::to_string(service.options.max_line_bytes) + " bytes");
+    return {format_line_reply(PointAnswer::refusal(ReplyCode::kLimit, "line too long")), true};
+  }
+  const LineRequest request = parse_line_request(line);
+  if (const auto* auth = std::get_if<AuthRequest>(&request)) {
+    state.authorized = service.authorized(auth->token);
+    if (state.authorized) return {line_auth_accepted(), false};
+    service.refused_request(client, "line", ReplyCode::kUnauthorized, "wrong token");
+    return {format_line_reply(PointAnswer::refusal(ReplyCode::kUnauthorized, "")), true};
+  }
+  if (!state.authorized) {
+    const auto* point = std::get_if<PointRequest>(&request);
+    const auto* bad = std::get_if<BadRequest>(&request);
+    service.refused_request(client, "line", ReplyCode::kUnauthorized,
+                            "a request before 'auth <token>'");
+    return {format_line_reply(
+                PointAnswer::refusal(ReplyCode::kUnauthorized, ""),
+                point ? point->orientation_form : (bad ? bad->form : OrientationForm::kNone)),
+            true};
+  }
+  if (const auto* point = std::get_if<PointRequest>(&request)) {
+    return {format_line_reply(
+                service.answer(service.registry.find(point->model), *point, client, "line"),
+                point->orientation_form),
+            false};
+  }
+  const auto& bad = std::get<BadRequest>(request);
+  service.refused_request(client, "line", bad.code, bad.reason);
+  return {format_line_reply(PointAnswer::refusal(bad.code, bad.reason), bad.form), false};
+}
+
 asio::awaitable<void> line_session(Service::Impl& service, tcp::socket socket) {
-  const OpenConnection counted(service.open);
+  const OpenConnection counted(service.open_line);
   const std::string client = peer_of(socket);
   boost::system::error_code ec;
   socket.set_option(tcp::no_delay(true), ec);
@@ -60,46 +98,29 @@ asio::awaitable<void> line_session(Service::Impl& service, tcp::socket socket) {
   auto c = std::make_shared<LineConnection>(std::move(socket));
   asio::co_spawn(c->socket.get_executor(), watchdog(service, c), asio::detached);
   std::string buffer;
-  bool authorized = service.options.token.empty();
+  LineState state;
+  state.authorized = service.options.token.empty();
+  // Room for the longest request and its "\r\n": the bound itself is checked on the request.
+  const std::size_t max_buffer = service.options.max_line_bytes + 2;
   for (;;) {
-    const std::size_t n = co_await asio::async_read_until(
-        c->socket, asio::dynamic_buffer(buffer, service.options.max_line_bytes + 1), '\n',
-        asio::redirect_error(asio::use_awaitable, ec));
+    const std::size_t n =
+        co_await asio::async_read_until(c->socket, asio::dynamic_buffer(buffer, max_buffer), '\n',
+                                        asio::redirect_error(asio::use_awaitable, ec));
     c->last = std::chrono::steady_clock::now();
-    std::string reply;
-    bool close = false;
+    LineOutcome outcome;
     if (ec == asio::error::not_found) {  // the line is longer than the bound: no resync, close
-      ++service.refusals;
-      reply = format_line_reply(PointAnswer::refusal(ReplyCode::kLimit, "line too long"));
-      close = true;
+      service.refused_request(
+          client, "line", ReplyCode::kLimit,
+          "line over " + std::to_string(service.options.max_line_bytes) + " bytes");
+      outcome = {format_line_reply(PointAnswer::refusal(ReplyCode::kLimit, "line too long")), true};
     } else if (ec) {
       break;  // closed by the client, reset, or by the watchdog
     } else {
-      const std::string_view line(buffer.data(), n - 1);
-      const LineRequest request = parse_line_request(line);
-      if (const auto* auth = std::get_if<AuthRequest>(&request)) {
-        authorized = service.authorized(auth->token);
-        reply = authorized ? line_auth_accepted()
-                           : format_line_reply(PointAnswer::refusal(ReplyCode::kUnauthorized, ""));
-        close = !authorized;
-      } else if (!authorized) {
-        const auto* point = std::get_if<PointRequest>(&request);
-        reply = format_line_reply(PointAnswer::refusal(ReplyCode::kUnauthorized, ""),
-                                  point ? point->orientation_form : OrientationForm::kNone);
-        close = true;
-      } else if (const auto* point = std::get_if<PointRequest>(&request)) {
-        reply = format_line_reply(
-            service.answer(service.registry.find(point->model), *point, client, "line"),
-            point->orientation_form);
-      } else {
-        const auto& bad = std::get<BadRequest>(request);
-        ++service.refusals;
-        reply = format_line_reply(PointAnswer::refusal(bad.code, bad.reason), bad.form);
-      }
+      outcome = handle_line(service, std::string_view(buffer.data(), n - 1), state, client);
       buffer.erase(0, n);
     }
-    co_await send(*c, reply, ec);
-    if (ec || close) break;
+    co_await send(*c, outcome.reply, ec);
+    if (ec || outcome.close) break;
   }
   c->timer.cancel();
   c->socket.shutdown(tcp::socket::shutdown_both, ec);

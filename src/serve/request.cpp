@@ -15,6 +15,7 @@ const char* to_string(ReplyCode code) {
     case ReplyCode::kUnauthorized: return "unauthorized";
     case ReplyCode::kLimit: return "limit";
     case ReplyCode::kInternal: return "internal error";
+    case ReplyCode::kTooFar: return "too far to extrapolate";
   }
   return "internal error";
 }

@@ -45,6 +45,7 @@ enum class ReplyCode : int {
   kUnauthorized = 5,    ///< a token is required and was not given or is wrong
   kLimit = 6,           ///< a bound was hit (line or body length, batch size, connections)
   kInternal = 7,        ///< the service failed: a bug, reported, never a silent default
+  kTooFar = 8,          ///< extrapolation asked farther from the fiducials than the service allows
 };
 
 /// The name of a code for logs and JSON ("ok", "malformed", ...).

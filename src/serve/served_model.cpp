@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <limits>
 #include <utility>
 
 #include "vrreg/core/file_error.hpp"
@@ -52,9 +53,20 @@ std::string utc_now() {
 }
 
 ServedModel::ServedModel(ModelIdentity identity, PreparedCorrector corrector)
-    : identity_(std::move(identity)), corrector_(std::move(corrector)) {}
+    : identity_(std::move(identity)),
+      corrector_(std::move(corrector)),
+      box_min_mm_(Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity())),
+      box_max_mm_(-box_min_mm_) {
+  for (const auto& f : corrector_.model().fiducials) {
+    for (int a = 0; a < 3; ++a) {
+      const double v = units::m_to_mm(f.sensor_m(a));
+      box_min_mm_(a) = std::min(box_min_mm_(a), v);
+      box_max_mm_(a) = std::max(box_max_mm_(a), v);
+    }
+  }
+}
 
-PointAnswer ServedModel::answer(const PointRequest& request) const {
+PointAnswer ServedModel::answer(const PointRequest& request, double max_extrapolation) const {
   try {
     MeasuredPoints points;
     points.sensor_m.resize(3, 1);
@@ -99,6 +111,23 @@ PointAnswer ServedModel::answer(const PointRequest& request) const {
       refused.status = to_string(status);
       refused.uncorrected_robot_mm = mm_of(c.uncorrected_robot_m);
       return refused;
+    }
+    if (status == StencilStatus::kExtrapolated && std::isfinite(max_extrapolation)) {
+      // A field model extrapolates anywhere; a robot sent kilometres away is a typing error or
+      // a wrong frame, whatever sd is attached.
+      const Eigen::Vector3d outside =
+          (box_min_mm_ - request.sensor_mm).cwiseMax(request.sensor_mm - box_max_mm_).cwiseMax(0.0);
+      const double diagonal_mm = (box_max_mm_ - box_min_mm_).norm();
+      if (!(outside.norm() <= max_extrapolation * diagonal_mm)) {
+        PointAnswer refused = PointAnswer::refusal(
+            ReplyCode::kTooFar,
+            fmt::format("{}: {:.1f} mm outside the fiducials' box, extrapolated at most {:.1f} mm "
+                        "({} times its diagonal)",
+                        identity_.name, outside.norm(), max_extrapolation * diagonal_mm,
+                        max_extrapolation));
+        refused.uncorrected_robot_mm = mm_of(c.uncorrected_robot_m);
+        return refused;
+      }
     }
     PointAnswer a;
     a.status = to_string(status);

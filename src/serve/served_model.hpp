@@ -2,6 +2,7 @@
 #pragma once
 // A model the service answers with: read from its file once, its corrector prepared, and named
 // by the SHA-256 of the file's bytes so that every answer can be traced to the file it came from.
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -29,8 +30,16 @@ class ServedModel {
   ServedModel(ModelIdentity identity, PreparedCorrector corrector);
 
   /// Corrects one point (paper Eq. 7, 8 and {R, tau}) exactly as `vrreg correct` would.
+  /// An extrapolated answer for a point farther from the fiducials' bounding box (sensor frame)
+  /// than `max_extrapolation` times the box's diagonal is refused with kTooFar instead.
   /// Never throws: a refusal is a PointAnswer with its code and reason.
-  [[nodiscard]] PointAnswer answer(const PointRequest& request) const;
+  [[nodiscard]] PointAnswer answer(
+      const PointRequest& request,
+      double max_extrapolation = std::numeric_limits<double>::infinity()) const;
+
+  /// The fiducials' bounding box, sensor frame [mm].
+  [[nodiscard]] const Eigen::Vector3d& box_min_mm() const { return box_min_mm_; }
+  [[nodiscard]] const Eigen::Vector3d& box_max_mm() const { return box_max_mm_; }
 
   [[nodiscard]] const ModelIdentity& identity() const { return identity_; }
   [[nodiscard]] const PreparedCorrector& corrector() const { return corrector_; }
@@ -38,6 +47,8 @@ class ServedModel {
  private:
   ModelIdentity identity_;
   PreparedCorrector corrector_;
+  Eigen::Vector3d box_min_mm_;
+  Eigen::Vector3d box_max_mm_;
 };
 
 /// Reads `path`, prepares its corrector (the model's stored one when it answers) and checks that

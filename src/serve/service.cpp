@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "service.hpp"
 
+#include <fmt/format.h>
 #include <openssl/crypto.h>
 #include <openssl/evp.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -16,10 +20,18 @@
 namespace vrreg::serve {
 namespace {
 
+// "localhost" is the name every user types for loopback; no resolver is asked (it could answer
+// with anything /etc/hosts says).
+asio::ip::address address_of(const std::string& text, boost::system::error_code& ec) {
+  std::string lower = text;
+  for (char& c : lower) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
+  if (lower == "localhost") return asio::ip::address_v4::loopback();
+  return asio::ip::make_address(text, ec);
+}
 
 tcp::acceptor bind(asio::io_context& io, const Endpoint& endpoint, const char* option) {
   boost::system::error_code ec;
-  const asio::ip::address address = asio::ip::make_address(endpoint.address, ec);
+  const asio::ip::address address = address_of(endpoint.address, ec);
   VRREG_THROW_UNLESS(!ec, option << " " << endpoint.address << ": not an IP address");
   tcp::acceptor acceptor(io);
   const tcp::endpoint at(address, endpoint.port);
@@ -35,9 +47,9 @@ tcp::acceptor bind(asio::io_context& io, const Endpoint& endpoint, const char* o
 using Session = asio::awaitable<void> (*)(Service::Impl&, tcp::socket);
 
 // Accepts until the acceptor closes; each connection gets its own strand, so that its timeouts
-// and its reads and writes never run at once.
+// and its reads and writes never run at once. Each protocol has its own budget of connections.
 asio::awaitable<void> accept_loop(Service::Impl& service, tcp::acceptor& acceptor, Session session,
-                                  const char* protocol) {
+                                  const char* protocol, std::atomic<int>& open, int max_open) {
   boost::system::error_code ec;
   for (;;) {
     tcp::socket socket = co_await acceptor.async_accept(
@@ -45,8 +57,9 @@ asio::awaitable<void> accept_loop(Service::Impl& service, tcp::acceptor& accepto
     if (ec == asio::error::operation_aborted || !acceptor.is_open()) break;
     if (ec) continue;  // e.g. EMFILE: the next accept may succeed
     ++service.connections;
-    if (service.open.load() >= service.options.max_connections) {
+    if (open.load() >= max_open) {
       ++service.rejected;
+      const std::string client = peer_of(socket);
       // Said, not silently dropped: a line client reads a refusal, an HTTP client a 503.
       const std::string refusal =
           std::string(protocol) == "line"
@@ -56,6 +69,8 @@ asio::awaitable<void> accept_loop(Service::Impl& service, tcp::acceptor& accepto
       socket.non_blocking(true, ec);
       socket.write_some(asio::buffer(refusal), ec);
       socket.close(ec);
+      service.refused_request(client, protocol, ReplyCode::kLimit,
+                              fmt::format("over {} open {} connections", max_open, protocol));
       continue;
     }
     auto executor = socket.get_executor();
@@ -77,7 +92,7 @@ asio::awaitable<void> every(Service::Impl& service, double period_s,
 
 bool is_loopback(const std::string& address) {
   boost::system::error_code ec;
-  const asio::ip::address a = asio::ip::make_address(address, ec);
+  const asio::ip::address a = address_of(address, ec);
   return !ec && a.is_loopback();
 }
 
@@ -146,6 +161,13 @@ void ServeOptions::validate() const {
   VRREG_THROW_UNLESS(max_batch >= 1 && max_batch <= 1000000, "--max-batch: 1 to 10^6");
   VRREG_THROW_UNLESS(max_connections >= 1 && max_connections <= 100000,
                      "--max-connections: 1 to 100000");
+  VRREG_THROW_UNLESS(max_http_connections >= 1 && max_http_connections <= 100000,
+                     "--max-http-connections: 1 to 100000");
+  VRREG_THROW_UNLESS(batch_threads >= 0 && batch_threads <= 256,
+                     "--batch-threads: 0 (half the cores) to 256");
+  VRREG_THROW_UNLESS(
+      max_extrapolation > 0,
+      "--max-extrapolation: above 0 (times the fiducials' box diagonal; inf: no cap)");
   VRREG_THROW_UNLESS(idle_timeout_s > 0 && idle_timeout_s <= 86400,
                      "--idle-timeout-s: above 0, at most a day");
   VRREG_THROW_UNLESS(io_timeout_s > 0 && io_timeout_s <= 3600, "io timeout: above 0, at most 1 h");
@@ -171,13 +193,66 @@ PointAnswer Service::Impl::answer(const std::shared_ptr<const ServedModel>& mode
                                   const PointRequest& request, const std::string& client,
                                   const char* protocol) {
   ++corrections;
-  PointAnswer a = model ? model->answer(request)
+  PointAnswer a = model ? model->answer(request, options.max_extrapolation)
                         : PointAnswer::refusal(ReplyCode::kUnknownModel,
                                                "no model named '" + request.model + "' is served");
   if (a.code != ReplyCode::kOk) ++refusals;
   static const std::string kNone = "-";
   audit.record(client, protocol, request.model, model ? model->identity().sha256 : kNone, request, a);
   return a;
+}
+
+void Service::Impl::refused_request(const std::string& client, const char* protocol, ReplyCode code,
+                                    const std::string& reason) {
+  ++refusals;
+  if (code == ReplyCode::kMalformed) ++malformed;
+  if (code == ReplyCode::kUnauthorized) ++unauthorized;
+  if (code == ReplyCode::kLimit) ++limited;
+  std::string summary;
+  bool quiet = false;
+  {
+    const std::lock_guard lock(refusal_log_mutex_);
+    const auto now = std::chrono::steady_clock::now();
+    if (now - refusal_window_start_ >= kRefusalLogWindow) {
+      if (refusals_unlogged_ > 0) {
+        summary = fmt::format("{} more refused requests not logged (at most {} per {} s)",
+                              refusals_unlogged_, kRefusalLogBurst, kRefusalLogWindow.count());
+      }
+      refusal_window_start_ = now;
+      refusals_logged_ = 0;
+      refusals_unlogged_ = 0;
+    }
+    quiet = refusals_logged_ >= kRefusalLogBurst;
+    if (quiet) {
+      ++refusals_unlogged_;
+    } else {
+      ++refusals_logged_;
+    }
+  }
+  if (!summary.empty()) log_line(summary);
+  if (quiet) return;
+  // The reason may quote the client's bytes: one printable line in the log, whatever they were.
+  std::string shown = reason.substr(0, 200);
+  for (char& c : shown) c = (c >= 0x20 && c < 0x7f) ? c : '?';
+  if (reason.size() > shown.size()) shown += "...";
+  log_line(fmt::format("{} request from {} refused ({} {}): {}", protocol, client,
+                       static_cast<int>(code), to_string(code), shown));
+  audit.record_refusal(client, protocol, code, reason);
+}
+
+ServiceStats Service::Impl::stats() const {
+  ServiceStats s;
+  s.corrections = corrections.load();
+  s.refusals = refusals.load();
+  s.connections = connections.load();
+  s.rejected_connections = rejected.load();
+  s.open_line_connections = open_line.load();
+  s.open_http_connections = open_http.load();
+  s.open_connections = s.open_line_connections + s.open_http_connections;
+  s.malformed = malformed.load();
+  s.unauthorized = unauthorized.load();
+  s.limited = limited.load();
+  return s;
 }
 
 std::string peer_of(const tcp::socket& socket) {
@@ -210,10 +285,16 @@ void Service::start() {
   if (!s.threads.empty()) return;
   s.work.emplace(asio::make_work_guard(s.io));
   if (s.line_acceptor) {
-    asio::co_spawn(s.io, accept_loop(s, *s.line_acceptor, &line_session, "line"), asio::detached);
+    asio::co_spawn(s.io,
+                   accept_loop(s, *s.line_acceptor, &line_session, "line", s.open_line,
+                               s.options.max_connections),
+                   asio::detached);
   }
   if (s.http_acceptor) {
-    asio::co_spawn(s.io, accept_loop(s, *s.http_acceptor, &http_session, "http"), asio::detached);
+    asio::co_spawn(s.io,
+                   accept_loop(s, *s.http_acceptor, &http_session, "http", s.open_http,
+                               s.options.max_http_connections),
+                   asio::detached);
   }
   if (s.audit.enabled()) {
     asio::co_spawn(s.io, every(s, 0.1, [&s] { s.audit.flush(); }), asio::detached);
@@ -233,6 +314,18 @@ void Service::start() {
                     ? s.options.threads
                     : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   for (int i = 0; i < n; ++i) s.threads.emplace_back([&s] { s.io.run(); });
+  s.batch_work.emplace(asio::make_work_guard(s.batch_io));
+  const int n_batch = s.options.batch_threads > 0
+                          ? s.options.batch_threads
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / 2);
+  for (int i = 0; i < n_batch; ++i) {
+    s.batch_threads.emplace_back([&s] {
+      // Lower priority (Linux: per thread), so that on a busy machine the scheduler runs a
+      // robot's request before the next slice of a batch. Failing to lower it is harmless.
+      (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 10);
+      s.batch_io.run();
+    });
+  }
 }
 
 void Service::run_until_signalled() {
@@ -265,6 +358,11 @@ void Service::stop() {
   s.io.stop();  // open connections close when io and their sessions are destroyed
   for (std::thread& t : s.threads) t.join();
   s.threads.clear();
+  // A batch still answering finishes (its session waits in io, stopped): then the workers end.
+  s.batch_work.reset();
+  s.batch_io.stop();
+  for (std::thread& t : s.batch_threads) t.join();
+  s.batch_threads.clear();
   s.reloader.join();
   boost::system::error_code ec;
   if (s.line_acceptor) s.line_acceptor->close(ec);
@@ -274,11 +372,7 @@ void Service::stop() {
 
 int Service::reload(bool force) { return impl_->registry.reload(force); }
 
-ServiceStats Service::stats() const {
-  const Impl& s = *impl_;
-  return {s.corrections.load(), s.refusals.load(), s.connections.load(), s.rejected.load(),
-          s.open.load()};
-}
+ServiceStats Service::stats() const { return impl_->stats(); }
 
 const ModelRegistry& Service::models() const { return impl_->registry; }
 

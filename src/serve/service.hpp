@@ -20,7 +20,8 @@ struct Endpoint {
   unsigned short port = 0;
 };
 
-/// "ADDRESS:PORT", "[IPv6]:PORT" or "PORT" (on 127.0.0.1); throws InputError.
+/// "ADDRESS:PORT", "[IPv6]:PORT" or "PORT" (on 127.0.0.1); "localhost" is 127.0.0.1. Throws
+/// InputError.
 Endpoint parse_endpoint(const std::string& text);
 
 struct ServeOptions {
@@ -34,7 +35,16 @@ struct ServeOptions {
   std::size_t max_line_bytes = 1024;
   std::size_t max_body_bytes = 1u << 20;
   std::size_t max_batch = 10000;
-  int max_connections = 256;
+  /// Open connections at most, each protocol its own budget: HTTP clients (which may hold a
+  /// connection idle for the idle timeout) never take a robot's line-protocol slot.
+  int max_connections = 256;       ///< line protocol (--max-connections)
+  int max_http_connections = 256;  ///< HTTP (--max-http-connections)
+  /// Threads that answer HTTP batches (and bodies over 2 KiB), apart from the threads that read
+  /// and answer the line protocol, so that a batch never delays a robot; 0: half the cores.
+  int batch_threads = 0;
+  /// An extrapolated answer farther from the fiducials' bounding box than this many times its
+  /// diagonal is refused (code 8); infinity: no cap.
+  double max_extrapolation = 1.0;
   double idle_timeout_s = 600.0;     ///< a connection silent this long is closed
   double io_timeout_s = 10.0;        ///< a request or reply not through in this time: closed
   int reload_poll_ms = 1000;         ///< check the model files this often; 0: SIGHUP only
@@ -51,6 +61,12 @@ struct ServiceStats {
   unsigned long long connections = 0;  ///< accepted
   unsigned long long rejected_connections = 0;  ///< over max_connections
   int open_connections = 0;
+  /// Requests refused before they named a point (also in `refusals`).
+  unsigned long long malformed = 0;     ///< unreadable (code 1, HTTP 400)
+  unsigned long long unauthorized = 0;  ///< no or a wrong token (code 5, HTTP 401)
+  unsigned long long limited = 0;       ///< over a bound (code 6, HTTP 413)
+  int open_line_connections = 0;
+  int open_http_connections = 0;
 };
 
 class Service {

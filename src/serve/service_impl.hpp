@@ -6,7 +6,10 @@
 
 #include <boost/asio.hpp>
 #include <atomic>
+#include <chrono>
+#include <mutex>
 #include <optional>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -30,7 +33,11 @@ struct Service::Impl {
   std::atomic<unsigned long long> refusals{0};
   std::atomic<unsigned long long> connections{0};
   std::atomic<unsigned long long> rejected{0};
-  std::atomic<int> open{0};
+  std::atomic<unsigned long long> malformed{0};
+  std::atomic<unsigned long long> unauthorized{0};
+  std::atomic<unsigned long long> limited{0};
+  std::atomic<int> open_line{0};
+  std::atomic<int> open_http{0};
   std::atomic<bool> stopping{false};
   std::atomic<bool> reloading{false};
   asio::io_context io;
@@ -39,14 +46,34 @@ struct Service::Impl {
   std::optional<tcp::acceptor> http_acceptor;
   asio::thread_pool reloader{1};  ///< loads models off the threads that answer
   std::vector<std::thread> threads;
+  // Declared after io: destroyed first, so that a batch still queued there, which holds its
+  // session, lets the session go while io and its sockets are still there.
+  asio::io_context batch_io;  ///< answers batches, off the threads robots wait on
+  std::optional<asio::executor_work_guard<asio::io_context::executor_type>> batch_work;
+  std::vector<std::thread> batch_threads;
 
   /// Answers one point with `model` (null: not served): corrects, counts and audits.
   PointAnswer answer(const std::shared_ptr<const ServedModel>& model, const PointRequest& request,
                      const std::string& client, const char* protocol);
   /// Whether `given` is the token (always true when the service has none).
   [[nodiscard]] bool authorized(const std::string& given) const;
+  /// Counts a request refused before it named a point (malformed, unauthorized, over a bound)
+  /// and says so in the service log and the audit log, at most kRefusalLogBurst lines per
+  /// kRefusalLogWindow (a port scan or a fuzzing client must not flood either).
+  void refused_request(const std::string& client, const char* protocol, ReplyCode code,
+                       const std::string& reason);
+  [[nodiscard]] ServiceStats stats() const;
 
   void log_line(const std::string& message) const;
+
+  static constexpr int kRefusalLogBurst = 20;
+  static constexpr std::chrono::seconds kRefusalLogWindow{10};
+
+ private:
+  std::mutex refusal_log_mutex_;
+  std::chrono::steady_clock::time_point refusal_window_start_{};
+  int refusals_logged_ = 0;
+  unsigned long long refusals_unlogged_ = 0;
 };
 
 /// `s` seconds as a steady-clock duration (timeouts are options in seconds).
@@ -69,6 +96,22 @@ class OpenConnection {
 
 /// "address:port" of the peer, or "?" when the socket has none any more.
 std::string peer_of(const tcp::socket& socket);
+
+/// What a line-protocol connection carries from one request to the next.
+struct LineState {
+  bool authorized = false;
+};
+
+/// The reply to one line-protocol request and whether the connection closes after it.
+struct LineOutcome {
+  std::string reply;
+  bool close = false;
+};
+
+/// Answers one request line (`line` without its '\n'; a trailing '\r' is dropped): reads it,
+/// checks the token and the length bound, corrects, counts, logs and audits. Never throws.
+LineOutcome handle_line(Service::Impl& service, std::string_view line, LineState& state,
+                        const std::string& client);
 
 asio::awaitable<void> line_session(Service::Impl& service, tcp::socket socket);
 asio::awaitable<void> http_session(Service::Impl& service, tcp::socket socket);

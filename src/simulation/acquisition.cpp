@@ -6,6 +6,7 @@
 
 #include "acquisition_detail.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/rotation.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/lwr_ik.hpp"
 #include "vrreg/kinematics/ur_ik.hpp"
@@ -83,6 +84,7 @@ SimulatedDataset simulate_dataset(const Testbed& testbed, Dataset dataset,
   data.sigma_rep_spec_m = testbed.sigma_rep_spec_m;
   data.has_config = testbed.kind == TestbedKind::kLwr4;
   data.marker_flange_m = options.marker_flange_m;
+  data.body_mount_rotation_rad = options.body_mount_rotation_rad;
   data.time_s = options.time_s;
   data.events = options.events;
 
@@ -128,6 +130,11 @@ void acquire_visits(const Testbed& testbed, SimulatedDataset& data) {
   Random orientation_rng = Random::stream(data.seed ^ at, kOrientationStream + dataset_index);
   const TrackerModel& tracker = data.errors.tracker;
   const bool rigid_body = tracker.rigid_body_radius_m > 0.0;
+  VRREG_THROW_UNLESS(!data.body_mount_rotation_rad || data.body_mount_rotation_rad->allFinite(),
+                     "the rigid body's mounting rotation must be finite");
+  const Eigen::Matrix3d R_tool_body = data.body_mount_rotation_rad
+                                          ? rotation_exp(*data.body_mount_rotation_rad)
+                                          : Eigen::Matrix3d::Identity();
   const Eigen::Vector3d orientation_sigma_rad = orientation_noise_sigma_rad(tracker);
   const int k = tracker.readings_per_location;
   data.readings.reserve(data.visits.size() * static_cast<std::size_t>(k));
@@ -137,6 +144,7 @@ void acquire_visits(const Testbed& testbed, SimulatedDataset& data) {
     if (rigid_body) {
       visit.R_commanded = kinematics::forward_kinematics(robot.nominal(), visit.q_rad).linear();
       visit.R_true = robot.actual_rotation(visit.q_rad);
+      if (data.body_mount_rotation_rad) visit.R_true = visit.R_true * R_tool_body;
     }
     for (int r = 0; r < k; ++r) {
       data.readings.push_back(

@@ -44,6 +44,7 @@ SimulatedDataset simulate_plan(const Testbed& testbed, const std::vector<Command
   data.sigma_rep_spec_m = testbed.sigma_rep_spec_m;
   data.has_config = plan.front().config.has_value();
   data.marker_flange_m = options.marker_flange_m;
+  data.body_mount_rotation_rad = options.body_mount_rotation_rad;
   data.time_s = options.time_s;
   data.events = options.events;
   VRREG_THROW_UNLESS(options.monitor_visits >= 1,

@@ -4,6 +4,7 @@
 // auto stores the choice, the CSVs gain predicted_sd_mm, the same input gives the same bytes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
@@ -99,6 +100,42 @@ TEST_F(FieldModelCli, JointWithoutJointsOrRobotSaysWhy) {
   EXPECT_EQ(e.status, 1);
   EXPECT_NE(e.err.find("no joint angles"), std::string::npos) << e.err;
   EXPECT_EQ(e.err.find('\n'), e.err.size() - 1) << e.err;  // one line
+}
+
+// A saved kriging corrector whose file was edited is refused where it is loaded, by every
+// command and the service alike, in one line naming the model file and the key.
+TEST_F(FieldModelCli, AnEditedKrigingModelIsRefusedWhenLoaded) {
+  if (std::getenv("VRREG_SANITIZED") != nullptr) GTEST_SKIP() << "kriging is slow under ASan";
+  ASSERT_EQ(
+      run_vrreg_in(dir_, "register --fiducials " + cell_ + " --interpolation kriging -o k.json")
+          .status,
+      0);
+  const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(read_text(dir_ / "k.json"));
+  const auto expect_refused = [&](const nlohmann::ordered_json& edited, const std::string& key) {
+    write_text(dir_ / "edited.json", edited.dump(2));
+    for (const std::string& args :
+         {"evaluate --model edited.json --targets " + cell_ + " --exact",
+          "correct --model edited.json --points " + cell_ + " -o c.csv",
+          std::string("serve --listen 127.0.0.1:0 --reload-poll-ms 0 --model cell=edited.json")}) {
+      const CliResult r = run_vrreg_in(dir_, args, "timeout 60");
+      EXPECT_EQ(r.status, 1) << args << "\n" << r.err;
+      EXPECT_NE(r.err.find("edited.json: '" + key + "'"), std::string::npos) << args << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "c.csv"));
+  };
+  for (const char* label : {"rbf", "joint"}) {
+    nlohmann::ordered_json edited = doc;
+    edited["corrector"]["method"] = label;
+    expect_refused(edited, "corrector.method");
+  }
+  nlohmann::ordered_json edited = doc;
+  edited["corrector"]["state"]["x.length_m"]["values"][0] = -0.05;
+  expect_refused(edited, "corrector.state.x.length_m");
+  edited = doc;
+  edited["corrector"]["state"]["x.signal_sd_m"] =
+      1000.0 * doc["corrector"]["state"]["x.signal_sd_m"].get<double>();
+  expect_refused(edited, "corrector.state");
 }
 
 }  // namespace

@@ -29,6 +29,7 @@ class InputOverwrite : public ::testing::Test {
     const fs::path& d = *dir_;
     write_text(d / "parts.csv", kOverwriteParts);
     write_text(d / "robot.yaml", kUr5RobotYaml);
+    write_text(d / "token.txt", "s3cret-token\n");
     fs::create_directories(d / "rep");
     for (const std::string& args :
          {"simulate ur5 A1 -o " + shell_quoted(d / "meas.csv") + " --write-errors " +
@@ -51,6 +52,14 @@ class InputOverwrite : public ::testing::Test {
   // `args` with {IN} (a fresh copy of `input` in its own directory) and {OUT} (every spelling of
   // that copy): refused each time, the input unchanged.
   void expect_refused(const std::string& args, const fs::path& input, const std::string& option) {
+    expect_refused_in(args, input, option, "");
+  }
+  void expect_refused_with_timeout(const std::string& args, const fs::path& input,
+                                   const std::string& option) {
+    expect_refused_in(args, input, option, "timeout 60");
+  }
+  void expect_refused_in(const std::string& args, const fs::path& input, const std::string& option,
+                         const std::string& prefix) {
     const fs::path work =
         fresh_dir(::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(work / "sub");
@@ -65,7 +74,7 @@ class InputOverwrite : public ::testing::Test {
       std::string line = args;
       line.replace(line.find("{IN}"), 4, shell_quoted(copy));
       line.replace(line.find("{OUT}"), 5, shell_quoted(out));
-      const CliResult r = run_vrreg(line);
+      const CliResult r = run_vrreg_in({}, line, prefix);
       EXPECT_EQ(r.status, 1) << line << "\n" << r.out << r.err;
       EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
       EXPECT_NE(r.err.find(out.string() + ": "), std::string::npos) << r.err;
@@ -147,6 +156,68 @@ TEST_F(InputOverwrite, Plan) {
 TEST_F(InputOverwrite, Calibrate) {
   expect_refused("calibrate-testbeds --only ur5 --seeds 1 --ur5-errors {IN} -o {OUT}",
                  in("errors.json"), "--ur5-errors");
+}
+
+TEST_F(InputOverwrite, RobotFiles) {
+  const std::string meas = shell_quoted(in("meas.csv"));
+  const std::string model = shell_quoted(in("model.json"));
+  expect_refused("register --fiducials " + meas + " --robot {IN} -o {OUT}", in("robot.yaml"),
+                 "--robot");
+  expect_refused(
+      "evaluate --model " + model + " --targets " + meas + " --robot {IN} --per-target {OUT}",
+      in("robot.yaml"), "--robot");
+  expect_refused("correct --model " + model + " --points " + meas + " --robot {IN} -o {OUT}",
+                 in("robot.yaml"), "--robot");
+}
+
+TEST_F(InputOverwrite, Snippet) {
+  expect_refused("snippet urscript --model cell --token-file {IN} -o {OUT}", in("token.txt"),
+                 "--token-file");
+  expect_refused("snippet krl --model cell --token-file {IN} -o " +
+                     shell_quoted(in("VRREG_CORRECT.src")) + " --eki-config {OUT}",
+                 in("token.txt"), "--token-file");
+  EXPECT_FALSE(fs::exists(in("VRREG_CORRECT.src")));
+}
+
+TEST_F(InputOverwrite, SnippetProgramAndConfigurationMayNotBeOneFile) {
+  const fs::path work = fresh_dir("snippet-two-outputs");
+  fs::create_directories(work / "sub");
+  const CliResult r = run_vrreg("snippet krl --model cell -o " + shell_quoted(work / "x.src") +
+                                " --eki-config " + shell_quoted(work / "sub" / ".." / "x.src"));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("--eki-config is the same file as -o"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(work / "x.src"));
+  fs::remove_all(work);
+}
+
+// The service refuses before it loads a model or opens a port; `timeout` stops a service that
+// would start instead.
+TEST_F(InputOverwrite, ServeAuditLog) {
+  const std::string serve = "serve --listen 127.0.0.1:0 --reload-poll-ms 0";
+  std::string line = serve + " --model cell={IN} --audit-log {OUT}";
+  expect_refused_with_timeout(line, in("model.json"), "--model");
+  line = serve + " --model {IN} --audit-log {OUT}";
+  expect_refused_with_timeout(line, in("model.json"), "--model");
+  line =
+      serve + " --model " + shell_quoted(in("model.json")) + " --token-file {IN} --audit-log {OUT}";
+  expect_refused_with_timeout(line, in("token.txt"), "--token-file");
+}
+
+TEST_F(InputOverwrite, ServeAuditLogRotationMayNotReachAnInput) {
+  // Rotation renames LOG to LOG.1: a model named so would be replaced.
+  const fs::path work = fresh_dir("serve-rotation");
+  fs::copy_file(in("model.json"), work / "audit.log.1");
+  const std::string bytes = read_text(work / "audit.log.1");
+  const CliResult r =
+      run_vrreg_in({},
+                   "serve --listen 127.0.0.1:0 --model cell=" + shell_quoted(work / "audit.log.1") +
+                       " --audit-log " + shell_quoted(work / "audit.log"),
+                   "timeout 60");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("--audit-log is the input --model"), std::string::npos) << r.err;
+  EXPECT_EQ(read_text(work / "audit.log.1"), bytes);
+  EXPECT_FALSE(fs::exists(work / "audit.log"));
+  fs::remove_all(work);
 }
 
 TEST_F(InputOverwrite, TwoOutputsOfOneCommandMayNotBeOneFile) {

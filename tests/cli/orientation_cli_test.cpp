@@ -66,7 +66,10 @@ TEST(OrientationCli, SimulateRegisterEvaluateCorrectWithARigidBody) {
   std::vector<double> fields;
   std::istringstream cells(row);
   for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(std::atof(cell.c_str()));
-  const std::size_t qx = 13;  // after point,config,status, 3 x 3 positions, predicted_sd_mm
+  // after point,config,status, 3 x 3 positions, predicted_sd_mm, orientation_status
+  const std::size_t qx = 14;
+  EXPECT_NE(header.find(",predicted_sd_mm,orientation_status,robot_qx"), std::string::npos);
+  EXPECT_NE(row.find(",ok,"), std::string::npos);
   ASSERT_GT(fields.size(), qx + 3);
   EXPECT_NEAR(Eigen::Vector4d(fields[qx], fields[qx + 1], fields[qx + 2], fields[qx + 3]).norm(),
               1.0, 1e-10);

@@ -20,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-long lines_of(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+long newline_count(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
 TEST(UsageErrors, AreOneLineWithStatus2) {
   const fs::path dir = fresh_dir("usage");
@@ -31,7 +31,7 @@ TEST(UsageErrors, AreOneLineWithStatus2) {
            "evaluate --model m.json --targets t.csv --per-target ''"}) {
     const CliResult r = run_vrreg(args);
     EXPECT_EQ(r.status, 2) << args;
-    EXPECT_EQ(lines_of(r.err), 1) << args << "\n" << r.err;
+    EXPECT_EQ(newline_count(r.err), 1) << args << "\n" << r.err;
     EXPECT_EQ(r.err.rfind("vrreg: usage error: ", 0), 0U) << args << "\n" << r.err;
     EXPECT_NE(r.err.find("--help"), std::string::npos) << r.err;
     EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
@@ -61,7 +61,7 @@ TEST(OutputsThatAreNotFiles, AreRefusedBeforeTheInputsAreRead) {
           "simulate ur5 --write-errors " + shell_quoted(out)}) {
       const CliResult r = run_vrreg(args);
       EXPECT_EQ(r.status, 1) << args;
-      EXPECT_EQ(lines_of(r.err), 1) << args << "\n" << r.err;
+      EXPECT_EQ(newline_count(r.err), 1) << args << "\n" << r.err;
       EXPECT_NE(r.err.find(out.string() + ": is a"), std::string::npos) << args << "\n" << r.err;
       EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
     }

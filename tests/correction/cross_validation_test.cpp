@@ -11,6 +11,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "vrreg/core/check.hpp"
 #include "vrreg/correction/corrector.hpp"
 #include "vrreg/correction/cross_validation.hpp"
 #include "vrreg_test.hpp"

@@ -115,6 +115,45 @@ TEST(OrientationField, LinearTangentFieldIsReproducedByTrilinearInterpolation) {
   EXPECT_LT(worst_target_angle(field, kT, targets, linear), 1e-13);
 }
 
+TEST(OrientationField, AFieldNotBetterThanNoneIsKeptButNotApplied) {
+  // Residuals that are noise about the identity: interpolating them adds the neighbours' noise
+  // to each point's own, so the cross-validated RMS angle is above the uncorrected one.
+  Random noise(23);
+  std::vector<Eigen::Matrix3d> drawn;
+  const Points3 fiducials = testing::grid_points(6, 6, 6, Eigen::Vector3d::Constant(0.05),
+                                                 Eigen::Vector3d(0.3, -0.1, 0.1));
+  for (Eigen::Index j = 0; j < fiducials.cols(); ++j) drawn.push_back(rotation_exp(noise.normal3(5e-4)));
+  std::size_t next = 0;
+  const auto noisy = [&](const Eigen::Vector3d&) { return drawn[next++ % drawn.size()]; };
+  const OrientationCell c = cell(fiducials, kT, noisy);
+  const Points3 residuals = rotation_residuals_rad(kT.rotation, c.measured, c.commanded);
+  for (const InterpolationMethod m :
+       {InterpolationMethod::kTrilinear, InterpolationMethod::kScattered}) {
+    CorrectorOptions options;
+    options.interpolation.method = m;
+    const Corrector positions = Corrector::fit(c.data, options);
+    const OrientationCorrector field = OrientationCorrector::fit(positions, c.data, residuals);
+    EXPECT_FALSE(field.applied()) << to_string(m);
+    EXPECT_GE(field.cv_rms_rad(), field.uncorrected_rms_rad()) << to_string(m);
+    const Points3 targets = testing::grid_points(3, 3, 3, Eigen::Vector3d::Constant(0.07),
+                                                 Eigen::Vector3d(0.33, -0.07, 0.13));
+    const Points3 sensor_m = kT.rigid().inverse().apply_all(targets);
+    std::vector<Eigen::Matrix3d> measured(static_cast<std::size_t>(targets.cols()),
+                                          Eigen::Matrix3d::Identity());
+    const OrientationCorrection o =
+        field.correct(CorrectionQuery(sensor_m, targets, Eigen::MatrixXd(0, 0)), measured);
+    for (std::size_t t = 0; t < measured.size(); ++t) {
+      EXPECT_EQ(o.status[t], StencilStatus::kNotBetterThanNone);
+      EXPECT_EQ(o.corrected_R_robot_marker[t], o.uncorrected_R_robot_marker[t]);
+    }
+    EXPECT_EQ(o.n_flagged, targets.cols());
+    // Saved and restored, it stays not applied.
+    const OrientationCorrector restored =
+        OrientationCorrector::restore(field.save(), positions, c.data, residuals);
+    EXPECT_FALSE(restored.applied());
+  }
+}
+
 TEST(OrientationField, CountsAndValuesAreChecked) {
   const Points3 fiducials = testing::grid_points(3, 3, 3, Eigen::Vector3d::Constant(0.05));
   const auto identity = [](const Eigen::Vector3d&) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The drift study on a few seeds: reproducible, a bump of 0.3 mm found every time and undone by
 // the update, the warm-up told apart from a bump (the 200-seed table is in docs/monitoring.md).
+#include "vrreg/core/check.hpp"
 #include "vrreg/experiments/drift_study.hpp"
 
 #include <gtest/gtest.h>

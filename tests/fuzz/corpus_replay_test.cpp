@@ -27,7 +27,9 @@ const Case kCases[] = {
     {"measurement_csv", measurement_csv}, {"model_json", model_json}, {"robot_file", robot_file},
     {"error_model", error_model},         {"plan_csv", plan_csv},     {"parts_csv", parts_csv},
     {"urdf", urdf},
-    {"serve_line", serve_line},           {"serve_http", serve_http}};
+    {"serve_line", serve_line},           {"serve_http", serve_http},
+    {"serve_line_handler", serve_line_handler},
+    {"serve_http_handler", serve_http_handler}};
 
 std::vector<fs::path> inputs_of(const std::string& name) {
   std::vector<fs::path> out;

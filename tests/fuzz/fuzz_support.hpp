@@ -61,6 +61,8 @@ int parts_csv(const std::uint8_t* data, std::size_t size);
 int urdf(const std::uint8_t* data, std::size_t size);
 int serve_line(const std::uint8_t* data, std::size_t size);
 int serve_http(const std::uint8_t* data, std::size_t size);
+int serve_line_handler(const std::uint8_t* data, std::size_t size);
+int serve_http_handler(const std::uint8_t* data, std::size_t size);
 
 }  // namespace vrreg::fuzz
 

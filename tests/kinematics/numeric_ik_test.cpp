@@ -12,7 +12,9 @@
 #include "kinematics_test_support.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
+#include "vrreg/kinematics/inverse_kinematics.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
+#include "vrreg/kinematics/lwr_ik.hpp"
 #include "vrreg/kinematics/robots.hpp"
 #include "vrreg_test.hpp"
 
@@ -125,6 +127,42 @@ TEST(NumericIkOptions, SameSeedSameResultAndAStartAtQReturnsQ) {
   bool found = false;
   for (const IkSolution& s : from_q.solutions) found = found || (s.q_rad - q).norm() == 0.0;
   EXPECT_TRUE(found);
+}
+
+// A redundant chain has a continuum of solutions in each class: the one a controller moves to is
+// the one next to the current joints, which a search from random starts alone does not find.
+TEST(InverseKinematicsNearest, AnswersTheCurrentJointsWhenTheySolveThePose) {
+  const SerialChain column = column_arm();
+  Random rng(11);
+  double worst_exact = 0.0, worst_near = 0.0;
+  for (int k = 0; k < (::vrreg::testing::sanitized() ? 4 : 12); ++k) {
+    const JointVector q = random_joints(rng, column);
+    const Eigen::Isometry3d t = forward_kinematics(column, q);
+    const IkResult exact = inverse_kinematics_nearest(column, t, q);
+    ASSERT_TRUE(exact.ok()) << exact.message;
+    ASSERT_EQ(exact.solutions.size(), 1u);
+    worst_exact = std::max(worst_exact, (exact.solutions[0].q_rad - q).cwiseAbs().maxCoeff());
+    // Current joints 1 mm and 0.5 deg off a solution: the answer stays next to them.
+    JointVector current = q;
+    current(0) += 0.001;
+    for (int i = 1; i < column.n_joints(); ++i) current(i) += 0.0087;
+    const IkResult near = inverse_kinematics_nearest(column, t, current);
+    ASSERT_TRUE(near.ok()) << near.message;
+    const auto e = pose_error(forward_kinematics(column, near.solutions[0].q_rad), t);
+    EXPECT_LE(e.position_m, 1e-12);
+    worst_near = std::max(worst_near, (near.solutions[0].q_rad - q).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LE(worst_exact, 1e-9);
+  EXPECT_LE(worst_near, 0.05);
+  // The closed forms answer the same way.
+  for (const SerialChain& chain : {ur5(), lwr4()}) {
+    const JointVector q = random_joints(rng, chain);
+    std::optional<double> psi_rad;
+    if (chain.family() == ChainFamily::kLwr) psi_rad = lwr_arm_state(chain, q).psi_rad;
+    const IkResult r = inverse_kinematics_nearest(chain, forward_kinematics(chain, q), q, psi_rad);
+    ASSERT_TRUE(r.ok()) << chain.name() << ": " << r.message;
+    EXPECT_LE((r.solutions[0].q_rad - q).cwiseAbs().maxCoeff(), 1e-9) << chain.name();
+  }
 }
 
 TEST(NumericIkOptions, UnreachableIsAnAnswerAndBadOptionsThrow) {

@@ -2,6 +2,7 @@
 // The monitor check against independent references: chi-square quantiles from tables, the
 // false-alarm rate by Monte Carlo on unchanged cells, an exact rigid motion recovered, a moved
 // point named, a non-rigid change told apart.
+#include "vrreg/core/check.hpp"
 #include "vrreg/metrics/monitor_check.hpp"
 
 #include <gtest/gtest.h>

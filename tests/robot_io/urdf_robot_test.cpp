@@ -5,6 +5,7 @@
 #include "vrreg/robot_io/urdf_robot.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <cmath>
@@ -314,6 +315,23 @@ TEST(UrdfRobot, RobotFileNamesAUrdfChain) {
       Eigen::Isometry3d(Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitZ())) *
       kinematics::forward_kinematics(kinematics::ur5(), q);
   EXPECT_LE(pose_gap(kinematics::forward_kinematics(direct, q), rotated), 1e-12);
+  // base_link is "base" turned half a turn about joint 1: still the UR structure (the DH table
+  // of the built-in ur5, the half turn in the base transform), so the closed-form IK and
+  // everything that needs it (`vrreg plan`) take the file as given.
+  ASSERT_EQ(direct.family(), kinematics::ChainFamily::kUr);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_EQ(direct.row(i).a_m, kinematics::ur5().row(i).a_m) << i;
+    EXPECT_EQ(direct.row(i).alpha_rad, kinematics::ur5().row(i).alpha_rad) << i;
+    EXPECT_EQ(direct.row(i).d_m, kinematics::ur5().row(i).d_m) << i;
+  }
+  const kinematics::IkResult ik =
+      kinematics::inverse_kinematics(direct, kinematics::forward_kinematics(direct, q));
+  ASSERT_TRUE(ik.ok()) << ik.message;
+  double nearest = 1.0;
+  for (const kinematics::IkSolution& s : ik.solutions) {
+    nearest = std::min(nearest, (s.q_rad - q).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LE(nearest, 1e-9);
 }
 
 TEST(UrdfRobot, BadFilesAreOneLineErrorsNamingTheFile) {
@@ -361,6 +379,78 @@ TEST(UrdfRobot, BadFilesAreOneLineErrorsNamingTheFile) {
         (void)read_urdf_robot(good, {"tool0", "base"});
       },
       good, 0, "passes moving joint"));
+}
+
+TEST(UrdfRobot, ALinkWithTwoParentsIsRefused) {
+  TempDir dir;
+  const std::string limit = "<limit lower='-1' upper='1' effort='1' velocity='1'/>";
+  const auto joint = [&](const std::string& name, const std::string& parent,
+                         const std::string& child) {
+    return "<joint name='" + name + "' type='revolute'><parent link='" + parent +
+           "'/><child link='" + child + "'/><axis xyz='0 0 1'/>" + limit + "</joint>";
+  };
+  // a -> b -> c and a -> c, in either name order (urdfdom kept whichever joint sorts last).
+  for (const auto& [first, second] : {std::pair{"j1", "j2"}, std::pair{"j2", "j1"}}) {
+    const std::string path = dir.write("two_parents.urdf",
+                                       "<robot name='r'><link name='a'/><link name='b'/>"
+                                       "<link name='c'/>" +
+                                           joint("j0", "a", "b") + joint(first, "a", "c") +
+                                           joint(second, "b", "c") + "</robot>");
+    EXPECT_TRUE(throws_file_error([&] { (void)read_urdf_robot(path); }, path, 0,
+                                  "link 'c' is the child of two joints"));
+  }
+}
+
+TEST(UrdfRobot, DeepNestingIsRefusedWithTheLimit) {
+  TempDir dir;
+  const std::string ur5 = read_text(urdf_path("ur5.urdf"));
+  const std::size_t end = ur5.rfind("</robot>");
+  ASSERT_NE(end, std::string::npos);
+  // The UR5 with an extension element nested `levels` deep, as in `fragment`.
+  const auto nested = [&](int levels, const std::string& open, const std::string& close) {
+    std::string text = ur5.substr(0, end);
+    for (int i = 0; i < levels; ++i) text += open;
+    for (int i = 0; i < levels; ++i) text += close;
+    return text + "</robot>";
+  };
+  // 60 000 levels overflowed TinyXML's recursion (a crash); the limit is refused by name.
+  const struct {
+    const char* name;
+    std::string text;
+  } deep[] = {
+      {"deep.urdf", nested(60000, "<a>", "</a>")},
+      {"at_limit.urdf", nested(256, "<gazebo>", "</gazebo>")},
+      // Markup TinyXML reads as a start tag, whatever the quotes or comments around it hold.
+      {"quoted.urdf", nested(60000, "<a x='/>' y = \"</a>\">", "</a>")},
+      {"commented.urdf", nested(300, "<!-- </a> --><a><![CDATA[</a>]]>", "</a>")},
+  };
+  for (const auto& c : deep) {
+    const std::string path = dir.write(c.name, c.text);
+    EXPECT_TRUE(throws_file_error([&] { (void)read_urdf_robot(path); }, path, 0,
+                                  "XML elements nest deeper than 256 levels"))
+        << c.name;
+  }
+  // Up to the limit (the robot element is one level) the file is read as before.
+  const std::string ok = dir.write("ok.urdf", nested(255, "<gazebo>", "</gazebo>"));
+  EXPECT_EQ(read_urdf_robot(ok).n_joints(), 6);
+  const std::string flat = dir.write("flat.urdf", nested(60000, "<a/>", ""));
+  EXPECT_EQ(read_urdf_robot(flat).n_joints(), 6);
+}
+
+TEST(UrdfRobot, ADirectoryOrAFifoIsNamedForWhatItIs) {
+  TempDir dir;
+  const std::string folder = dir.file("robot.urdf");
+  std::filesystem::create_directory(folder);
+  EXPECT_TRUE(throws_file_error([&] { (void)load_robot(folder); }, folder, 0, "is a directory"));
+  const std::string fifo = dir.file("robot.yaml");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_TRUE(throws_file_error([&] { (void)load_robot(fifo); }, fifo, 0, "is a FIFO"));
+  try {
+    (void)load_robot(dir.file("absent.urdf"));
+    ADD_FAILURE() << "an absent robot file was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no robot file by that name"), std::string::npos);
+  }
 }
 
 }  // namespace

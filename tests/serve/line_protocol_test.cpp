@@ -26,7 +26,8 @@ TEST(LineProtocol, RefusesWhatIsNotARequest) {
   for (const std::string& line : std::vector<std::string>{"", "   ", "cell", "cell 1 2", "cell 1 2 x", "cell nan 1 2", "cell inf 1 2", "cell 1e10 0 0",
         "cell 1 2 3 config", "cell 1 2 3 config 1.5", "cell 1 2 3 joints", "cell 1 2 3 joints x",
         "cell 1 2 3 extrapolate extrapolate", "cell 1 2 3 4", "ce/ll 1 2 3", "cell 1 2 3\x01",
-        "cell 1 2 3 \xff", std::string(65, 'm') + " 1 2 3", "auth", "auth a b"}) {
+        "cell 1 2 3 \xff", std::string(65, 'm') + " 1 2 3", "auth", "auth a b",
+        "cell +-767.2 1 2", "cell 1 ++2 3", "cell 1 2 3 joints +-0.1"}) {
     const LineRequest r = parse_line_request(line);
     ASSERT_TRUE(std::holds_alternative<BadRequest>(r)) << line;
     EXPECT_FALSE(std::get<BadRequest>(r).reason.empty());
@@ -115,6 +116,11 @@ TEST(HttpApi, ReadsOnePointOrABatchAndRefusesTheRest) {
   EXPECT_EQ(code(R"({"model":"c","sensor_mm":[1,2,1e300]})"), 1);
   EXPECT_EQ(code(R"({"model":"c","points":[{"sensor_mm":[1,2,3]},{"sensor_mm":[1,2,3]}]})"), 6);
   EXPECT_EQ(code(std::string(100, '[') + std::string(100, ']')), 1);
+  // An empty batch is refused before any handler reads its first point.
+  EXPECT_EQ(code(R"({"model":"c","points":[]})"), 1);
+  // A batch refuses unknown top-level keys as a single request does.
+  EXPECT_EQ(code(R"({"model":"c","points":[{"sensor_mm":[1,2,3]}],"sensor_q":[0,0,0,1]})"), 1);
+  EXPECT_EQ(code(R"({"model":"c","points":[{"sensor_mm":[1,2,3]}],"extra":1})"), 1);
 }
 
 }  // namespace

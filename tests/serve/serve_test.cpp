@@ -108,12 +108,13 @@ TEST(Service, RefusalsCarryTheirCodeAndTheConnectionGoesOn) {
   EXPECT_EQ(c.ask("cell 1e400 0 0\n"), "(0,0,0,-1)\n");
   EXPECT_EQ(c.ask("\n"), "(0,0,0,-1)\n");
   EXPECT_EQ(c.ask("cell 10000 0 0\n"), "(0,0,0,-3)\n");  // outside the support: never silent
-  const std::string extrapolated = c.ask("cell 10000 0 0 extrapolate\r\n");
-  EXPECT_THAT(extrapolated, StartsWith("("));
-  EXPECT_FALSE(is_refusal(extrapolated)) << extrapolated;
+  // Metres away from an 80 mm cell: beyond the extrapolation cap, refused with its own code.
+  EXPECT_EQ(c.ask("cell 10000 0 0 extrapolate\r\n"), "(0,0,0,-8)\n");
   EXPECT_EQ(c.ask(std::string("cell 1 2 3\x01\n")), "(0,0,0,-1)\n");
+  EXPECT_EQ(c.ask("cell +-767.2 0 0\n"), "(0,0,0,-1)\n");  // two signs: a typing error
   const ServiceStats s = service.stats();
-  EXPECT_EQ(s.refusals, 7u);
+  EXPECT_EQ(s.refusals, 9u);
+  EXPECT_EQ(s.malformed, 6u);
 }
 
 TEST(Service, ALineLongerThanTheBoundIsRefusedAndClosed) {
@@ -176,6 +177,7 @@ TEST(Service, TokenIsRequiredBeforeAnyCorrection) {
     EXPECT_THAT(c.ask("cell 1 2 3\n"), StartsWith("("));
   }
   EXPECT_THAT(http_request(service.http_port(), "GET", "/v1/health", ""), StartsWith("401 "));
+  EXPECT_EQ(service.stats().unauthorized, 3u);
   EXPECT_THAT(http_request(service.http_port(), "GET", "/v1/health", "",
                            "Authorization: Bearer 0123456789abcdef-secret\r\n"),
               StartsWith("200 "));
@@ -242,6 +244,13 @@ TEST(Service, HttpAnswersAsTheLineProtocolAndBatches) {
                            std::string(100, '[') + std::string(100, ']')),
               StartsWith("400 "));
   EXPECT_THAT(http_request(service.http_port(), "GET", "/nothing", ""), StartsWith("404 "));
+  // An empty batch is refused, and the service answers on.
+  EXPECT_THAT(http_request(service.http_port(), "POST", "/v1/correct",
+                           R"({"model":"cell","points":[]})"),
+              StartsWith("400 "));
+  EXPECT_THAT(http_request(service.http_port(), "POST", "/v1/correct",
+                           R"({"model":"nothing","points":[]})"),
+              StartsWith("400 "));
   const std::string health = http_request(service.http_port(), "GET", "/v1/health", "");
   EXPECT_THAT(health, HasSubstr("\"method\":\"kriging\""));
   EXPECT_THAT(health, HasSubstr("\"sha256\":\""));

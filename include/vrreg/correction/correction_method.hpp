@@ -103,7 +103,15 @@ class FittedMethod {
   /// The arm's orientation error at commanded joints `joints_rad`, rotation vector of the actual
   /// against the nominal orientation, robot frame [rad], for methods that model the arm (the
   /// joint-space model); nullopt for methods that interpolate residuals.
+  /// `joint_angles_only`: the part the joint-angle errors give on the nominal arm.
   [[nodiscard]] virtual std::optional<Eigen::Vector3d> rotation_error_rad(
+      const Eigen::Ref<const Eigen::VectorXd>& /*joints_rad*/,
+      bool /*joint_angles_only*/ = false) const {
+    return std::nullopt;
+  }
+  /// The arm's fitted joint-angle errors at commanded joints [rad] (the joint-space model's);
+  /// nullopt for methods that interpolate residuals.
+  [[nodiscard]] virtual std::optional<Eigen::VectorXd> joint_angle_errors_rad(
       const Eigen::Ref<const Eigen::VectorXd>& /*joints_rad*/) const {
     return std::nullopt;
   }

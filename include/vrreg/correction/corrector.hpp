@@ -119,8 +119,13 @@ class Corrector {
   /// `auto`'s cross-validation table (when it chose the method).
   [[nodiscard]] const std::optional<CrossValidation>& cross_validation() const;
   /// The arm's orientation error at commanded joints (FittedMethod::rotation_error_rad): the
-  /// joint-space model's, nullopt for every other method.
+  /// joint-space model's, nullopt for every other method; `joint_angles_only`: the part its
+  /// joint-angle errors give on the nominal arm (JointErrorModel::predict_joint_angle_rotation_rad).
   [[nodiscard]] std::optional<Eigen::Vector3d> rotation_error_rad(
+      const Eigen::Ref<const Eigen::VectorXd>& joints_rad, bool joint_angles_only = false) const;
+  /// The joint-space model's fitted joint-angle errors at commanded joints [rad]; nullopt for
+  /// every other method.
+  [[nodiscard]] std::optional<Eigen::VectorXd> joint_angle_errors_rad(
       const Eigen::Ref<const Eigen::VectorXd>& joints_rad) const;
   /// True when `other` is this corrector or a copy of it (one fit, shared).
   [[nodiscard]] bool shares_fit_with(const Corrector& other) const { return impl_ == other.impl_; }

@@ -29,6 +29,9 @@ enum class StencilStatus {
   kExtrapolated,
   /// Fewer fiducials than any correction method needs (scattered's 4): uncorrected.
   kTooFewFiducials,
+  /// The method's cross-validated error on the fiducials is not below the uncorrected one:
+  /// applying it would make the point worse on average, so it is answered uncorrected.
+  kNotBetterThanNone,
 };
 
 /// Whether a target with this status was corrected (ok, or extrapolated on request).

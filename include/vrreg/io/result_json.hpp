@@ -18,6 +18,9 @@ namespace vrreg::io {
 /// register: transform, FRE, sigma_L (Eq. 1), noise and rho (Eq. 9), robust check, the
 /// cross-validation table and Procedure 2's figures.
 nlohmann::json register_json(const RegisterResult& result);
+/// An orientation field: its method, whether it is applied (its cross-validated RMS angle below
+/// the uncorrected one), both RMS angles and the methods compared (mrad).
+nlohmann::json orientation_field_json(const OrientationCorrector& field);
 /// evaluate: RMS_T (Eq. 4) both ways over the corrected targets, gamma, N_bad, the flagged ones
 /// apart, the predicted sd and its calibration, the strategy used.
 nlohmann::json evaluate_json(const EvaluateResult& result);
@@ -26,6 +29,9 @@ nlohmann::json evaluate_json(const EvaluateResult& result);
 nlohmann::json evaluate_json(const EvaluateResult& result, const RegistrationModel& model);
 /// correct: how many points, how many flagged, the method and its layout, the predicted sd.
 nlohmann::json correct_json(const CorrectResult& result);
+/// The corrected orientations' summary: method, counts by status, the predicted angle sd (median,
+/// max) and how many are above the limit (mrad).
+nlohmann::json orientation_correction_json(const OrientationCorrection& o);
 /// register with the marker offset (hand-eye, docs/hand-eye.md): the offset and its uncertainty
 /// (noise, joint offsets, both), the transform and its uncertainty, the marker's orientation when
 /// measured, FRE, sigma_L, rho, the fiducials used for the offset only. `result` must be ok().

@@ -25,6 +25,15 @@ IkResult inverse_kinematics(const SerialChain& chain, const Eigen::Isometry3d& T
 IkResult nearest_solution(const SerialChain& chain, const IkResult& all,
                           const JointRef& q_current_rad, JointNorm norm = JointNorm::kL2);
 
+/// The solution a controller moves to from `q_current_rad` [rad; m for prismatic joints]: every
+/// branch without the limits, then nearest_solution. A generic chain's numerical IK starts from
+/// the current joints, so that a redundant chain (an arm on a rail) answers the solution next to
+/// them rather than one of its random starts'.
+IkResult inverse_kinematics_nearest(const SerialChain& chain, const Eigen::Isometry3d& T_base_tcp,
+                                    const JointRef& q_current_rad,
+                                    std::optional<double> psi_rad = std::nullopt,
+                                    JointNorm norm = JointNorm::kL2);
+
 /// The configuration label of `q_rad` [rad] (a generic chain's: signs of its branch joints).
 std::optional<ConfigurationLabel> configuration_of(const SerialChain& chain, const JointRef& q_rad);
 

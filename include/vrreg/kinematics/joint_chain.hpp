@@ -3,8 +3,9 @@
 // A serial chain given joint by joint, as URDF describes one (each joint's origin in its parent
 // link's frame, then its motion about or along an axis), turned into the DH chain every
 // kinematics function works on. The DH frames are placed on the joint axes (common normals; on
-// parallel axes through the previous origin; x signs keeping |theta offset| <= 90 deg), so a chain
-// built like a UR or an LWR 4+ is recognised as one and gets its analytic IK.
+// parallel axes through the previous origin; x signs keeping |theta offset| <= 90 deg; frame 0's
+// x the base's, or its opposite when only that gives a UR or LWR 4+ table), so a chain built like
+// a UR or an LWR 4+ is recognised as one and gets its analytic IK.
 #include <Eigen/Geometry>
 #include <string>
 #include <vector>

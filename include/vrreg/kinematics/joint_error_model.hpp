@@ -111,6 +111,12 @@ class JointErrorModel {
   /// terms; the marker and trend terms move positions only). First order and exact agree to the
   /// square of the error.
   [[nodiscard]] Eigen::Vector3d predict_rotation_rad(const JointRef& q_rad) const;
+  /// The part of predict_rotation_rad that the fitted joint-angle errors dq(q) give on the
+  /// nominal arm, R_nominal(q + dq(q)) R_nominal(q)^T [rad]: without the DH deltas, which a
+  /// fixed tool orientation leaves in combinations positions cannot tell apart.
+  [[nodiscard]] Eigen::Vector3d predict_joint_angle_rotation_rad(const JointRef& q_rad) const;
+  /// The fitted joint-angle errors dq(q) at commanded joints `q_rad` [rad; m for prismatic].
+  [[nodiscard]] JointVector joint_angle_errors_rad(const JointRef& q_rad) const;
   /// predict_m for each joint vector, one column each.
   [[nodiscard]] Points3 predict_m(const std::vector<JointVector>& q_rad) const;
 

@@ -26,6 +26,10 @@ struct SimulationOptions {
   /// tool says (the paper's precision mount). Set it to simulate a cell whose offset is unknown:
   /// the file's robot positions stay the controller's TCP, the tracker sees the real marker.
   std::optional<Eigen::Vector3d> marker_flange_m = std::nullopt;
+  /// A rigid body mounted turned against the tool frame it is commanded in: the rotation vector
+  /// of its true orientation in the tool frame [rad] (a few tenths of a degree in practice).
+  /// Positions are unchanged; empty: mounted exactly.
+  std::optional<Eigen::Vector3d> body_mount_rotation_rad = std::nullopt;
   /// Plans: visits of each monitor location (role monitor), read in rounds after the others.
   int monitor_visits = 12;
   /// When this acquisition is made [s after time 0]: the robot has grown by
@@ -71,6 +75,7 @@ struct SimulatedDataset {
   RigidTransform T_robot_sensor{};  ///< the true tracker pose
   /// The true marker position in the flange frame [m] when options gave one; empty: the tool's.
   std::optional<Eigen::Vector3d> marker_flange_m{};
+  std::optional<Eigen::Vector3d> body_mount_rotation_rad{};  ///< SimulationOptions'
   double sigma_rep_spec_m = 0.0;  ///< the robot's specified repeatability
   double time_s = 0.0;            ///< when it was acquired (SimulationOptions::time_s)
   CellEvents events{};            ///< what had happened by then

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: Apache-2.0
+// Orientation correction across the test beds' scenarios, not at the default cell only: tool
+// tilt (0, 10, 30 deg from straight down), one fixed orientation or a tool turned 0-25 deg at
+// every location, a rigid body mounted 0.5 deg off, the UR5 and the KUKA LWR 4+, a lattice and
+// a scattered layout. For every method that corrects orientations and for auto, on held-out
+// targets: never worse than uncorrected, the predicted sd calibrated (RMS angle / sd 0.7-1.4),
+// and auto near the noise floor (a noise-free re-simulation of the same seed): the test beds'
+// physics is joint-based (DH errors, transmission errors, gravity compliance). Each scenario's
+// figures are printed as `sweep | ...` lines: the table in docs/orientation.md.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "vrreg/core/random.hpp"
+#include "vrreg/core/rotation.hpp"
+#include "vrreg/experiments/beyond_paper.hpp"
+#include "vrreg/experiments/simulated_measurements.hpp"
+#include "vrreg/kinematics/forward_kinematics.hpp"
+#include "vrreg/kinematics/inverse_kinematics.hpp"
+#include "vrreg/pipeline/evaluate.hpp"
+#include "vrreg/pipeline/register_fiducials.hpp"
+#include "vrreg/simulation/plan_acquisition.hpp"
+#include "vrreg_test.hpp"
+
+namespace vrreg::experiments {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct Scenario {
+  std::string name;
+  bool kuka = false;
+  double tilt_deg = 0.0;    ///< the tool tilted from straight down about the base's y axis
+  bool varied = false;      ///< each location turned 0-25 deg about a random axis besides
+  bool mounted_off = true;  ///< the rigid body mounted 0.5 deg off the tool frame
+  bool scattered = false;   ///< random locations instead of a lattice
+};
+
+// The locations: a 6 x 6 x 5 lattice at 40 mm (or 180 random points in its box) as fiducials
+// and 60 random points inside as targets, each with its commanded orientation, sent through the
+// test bed's IK from its home posture.
+std::vector<simulation::CommandedLocation> plan_of(const simulation::Testbed& tb,
+                                                   const Scenario& s) {
+  Random rng(s.kuka ? 41 : 43);
+  const Eigen::Vector3d lo = tb.volume_centre_m - Eigen::Vector3d(0.1, 0.1, 0.08);
+  std::vector<std::pair<Eigen::Vector3d, Role>> points;
+  for (int i = 0; i < 180; ++i) {
+    const Eigen::Vector3d lattice(0.04 * (i % 6), 0.04 * ((i / 6) % 6), 0.04 * (i / 36));
+    const Eigen::Vector3d random(rng.uniform(0.0, 0.2), rng.uniform(0.0, 0.2),
+                                 rng.uniform(0.0, 0.16));
+    points.emplace_back(lo + (s.scattered ? random : lattice), Role::kFiducial);
+  }
+  for (int i = 0; i < 60; ++i) {
+    points.emplace_back(lo + Eigen::Vector3d(rng.uniform(0.01, 0.19), rng.uniform(0.01, 0.19),
+                                             rng.uniform(0.01, 0.15)),
+                        Role::kTarget);
+  }
+  const Eigen::Matrix3d tilted =
+      tb.tcp_rotation * rotation_exp(Eigen::Vector3d(0.0, s.tilt_deg * kDeg, 0.0));
+  std::vector<simulation::CommandedLocation> plan;
+  kinematics::JointVector q_from = tb.home_q_rad;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = points[k].first;
+    T.linear() = tilted;
+    if (s.varied) {
+      const Eigen::Vector3d axis = rng.normal3(1.0).normalized();
+      T.linear() = tilted * rotation_exp(axis * rng.uniform(0.0, 25.0 * kDeg));
+    }
+    const kinematics::IkResult ik = kinematics::inverse_kinematics_nearest(
+        tb.nominal, T, q_from,
+        s.kuka ? std::optional<double>(tb.arm_angle_rad) : std::optional<double>());
+    if (!ik.ok()) continue;  // out of reach with this orientation: not planned
+    simulation::CommandedLocation l;
+    l.point = (points[k].second == Role::kTarget ? "T" : "F") + std::to_string(k);
+    l.role = points[k].second;
+    l.q_rad = ik.solutions.front().q_rad;
+    l.robot_m = kinematics::forward_kinematics(tb.nominal, l.q_rad).translation();
+    if (!s.kuka) q_from = l.q_rad;  // the UR controller: nearest the previous location's
+    plan.push_back(l);
+  }
+  return plan;
+}
+
+MeasurementSet measured(const simulation::Testbed& tb, const Scenario& s, bool noise) {
+  simulation::SimulationOptions o;
+  o.seed = 7;
+  simulation::TestbedErrorModel e = tb.default_errors;
+  e.tracker.rigid_body_radius_m = 0.05;
+  o.errors = noise ? e : without_noise(e);
+  if (s.mounted_off) o.body_mount_rotation_rad = Eigen::Vector3d(0.3, -0.35, 0.2) * kDeg;
+  return to_measurement_set(simulation::simulate_plan(tb, plan_of(tb, s), o));
+}
+
+void check_scenario(const Scenario& s) {
+  const simulation::Testbed tb = s.kuka ? simulation::lwr4_testbed() : simulation::ur5_testbed();
+  const MeasurementSet set = measured(tb, s, true);
+  const std::vector<std::size_t> targets = set.select(Role::kTarget);
+  ASSERT_GE(targets.size(), 50u) << s.name;
+  const double floor_rad = angle_noise_floor_rad(set, measured(tb, s, false), targets);
+  RegisterOptions reg;
+  reg.rigid_body_statistics = false;
+  reg.robot = tb.nominal;
+  for (const InterpolationMethod m : {InterpolationMethod::kAuto, InterpolationMethod::kJoint,
+                                      InterpolationMethod::kKriging, InterpolationMethod::kRbf}) {
+    reg.interpolation.method = m;
+    const RegistrationModel model = register_fiducials(set, reg).model;
+    ASSERT_TRUE(model.orientation_corrector) << s.name;
+    const EvaluateResult r = evaluate(model, set);
+    ASSERT_TRUE(r.orientation) << s.name;
+    const OrientationEvaluation& o = *r.orientation;
+    const std::string what = s.name + ", " + to_string(m) +
+                             " (orientation: " + to_string(model.orientation_corrector->method()) +
+                             ")";
+    SCOPED_TRACE(what + ": uncorrected " + std::to_string(1e3 * o.unc_rms_rad) +
+                 " mrad, corrected " + std::to_string(1e3 * o.cor_rms_rad) + " mrad, floor " +
+                 std::to_string(1e3 * floor_rad) + " mrad, angle/sd " +
+                 std::to_string(o.calibration.rms_ratio));
+    // The table in docs/orientation.md comes from these lines.
+    std::printf("sweep | %s | %s | %s | %.3f | %.3f | %.2f | %.2f | %s\n", s.name.c_str(),
+                to_string(m), to_string(model.orientation_corrector->method()), 1e3 * o.unc_rms_rad,
+                1e3 * o.cor_rms_rad, o.cor_rms_rad / floor_rad, o.calibration.rms_ratio,
+                model.orientation_corrector->applied() ? "applied" : "not applied");
+    // Never worse than no correction: applied only where cross-validation says it helps.
+    EXPECT_LE(o.cor_rms_rad, o.unc_rms_rad);
+    if (model.orientation_corrector->applied() && o.calibration.n > 0) {
+      EXPECT_GT(o.calibration.rms_ratio, 0.7);
+      EXPECT_LT(o.calibration.rms_ratio, 1.4);
+    }
+    // 1.3x the floor; a UR5 tool turned at every location is held to 1.45x, what the joint
+    // model reaches there today (1.33-1.39x: docs/orientation.md).
+    if (m == InterpolationMethod::kAuto) {
+      EXPECT_LT(o.cor_rms_rad, (s.varied && !s.kuka ? 1.45 : 1.3) * floor_rad);
+    }
+  }
+}
+
+class OrientationSweep : public ::testing::TestWithParam<Scenario> {};
+
+TEST_P(OrientationSweep, NeverWorseCalibratedAndAutoAtTheFloor) {
+  if (testing::sanitized()) GTEST_SKIP() << "four fits per scenario: release build only";
+  check_scenario(GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenarios, OrientationSweep,
+    ::testing::Values(Scenario{"ur5_down_fixed", false, 0.0, false},
+                      Scenario{"ur5_tilt10_fixed", false, 10.0, false},
+                      Scenario{"ur5_tilt30_fixed", false, 30.0, false},
+                      Scenario{"ur5_tilt10_fixed_mounted_exactly", false, 10.0, false, false},
+                      Scenario{"ur5_down_varied", false, 0.0, true},
+                      Scenario{"ur5_tilt30_varied_scattered", false, 30.0, true, true, true},
+                      Scenario{"ur5_tilt10_fixed_scattered", false, 10.0, false, true, true},
+                      Scenario{"kuka_tilt10_fixed", true, 10.0, false},
+                      Scenario{"kuka_down_varied", true, 0.0, true}),
+    [](const ::testing::TestParamInfo<Scenario>& scenario) { return scenario.param.name; });
+
+}  // namespace
+}  // namespace vrreg::experiments
