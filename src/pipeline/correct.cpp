@@ -99,7 +99,12 @@ CorrectResult correct_points(const Corrector& corrector, const OrientationCorrec
     for (const Eigen::Quaterniond& q : points.q_sensor_marker) {
       R_sensor_marker.push_back(unit_quaternion(q.coeffs(), "q_sensor_marker").toRotationMatrix());
     }
-    out.orientation = orientation->correct(query, R_sensor_marker, &out.correction);
+    // The orientations' joint model needs the joints even where the positions' method does not.
+    CorrectionQuery orientation_query(
+        points.sensor_m, needs.nominal_robot ? points.robot_m : no_points,
+        points.joints_rad.cols() == points.size() ? points.joints_rad : no_joints, sequence);
+    orientation_query.extrapolate = extrapolate;
+    out.orientation = orientation->correct(orientation_query, R_sensor_marker, &out.correction);
   }
   out.names = points.names;
   for (const int config : points.configs) out.configs.emplace_back(config);

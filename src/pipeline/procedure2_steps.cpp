@@ -166,8 +166,15 @@ TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementS
     query.extrapolate = request.extrapolate;
     TargetCorrection positions = corrector.correct(query);
     if (orientation != nullptr) {
-      *orientation =
-          correct_orientation_rows(model, set, rows, corrector, query, positions, request.robot);
+      // The orientations' joint model needs the joints even where the positions' method does not.
+      const Eigen::MatrixXd orientation_joints =
+          !corrector.needs().joints && set.n_joints > 0 ? joints_of(set, rows) : Eigen::MatrixXd(0, 0);
+      CorrectionQuery orientation_query(sensor_m, nominal_robot_m,
+                                        corrector.needs().joints ? joints : orientation_joints,
+                                        lines);
+      orientation_query.extrapolate = request.extrapolate;
+      *orientation = correct_orientation_rows(model, set, rows, corrector, orientation_query,
+                                              positions, request.robot);
     }
     return positions;
   };
