@@ -122,9 +122,16 @@ TEST(ServiceBatches, StoppingWhileABatchRunsIsClean) {
   service->start();
   nlohmann::json batch = {{"model", "cell"}, {"points", nlohmann::json::array()}};
   for (int i = 0; i < 10000; ++i) batch["points"].push_back({{"sensor_mm", {1.0, 2.0, i * 1.0}}});
-  std::thread batcher([&, port = service->http_port()] {
-    http_request(port, "POST", "/v1/correct", batch.dump());
+  const std::string body = batch.dump();
+  std::thread batcher([&body, port = service->http_port()] {
+    try {
+      http_request(port, "POST", "/v1/correct", body);
+    } catch (const std::exception&) {
+      // The service stopping under the request: refused or reset, both are clean here.
+    }
   });
+  // Stop while the batch is in the service (slow builds: wait for its connection first).
+  (void)eventually([&] { return service->stats().open_http_connections >= 1; });
   std::this_thread::sleep_for(std::chrono::milliseconds(30));
   service.reset();  // stops and joins, the batch answered or dropped
   batcher.join();
