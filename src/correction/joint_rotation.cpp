@@ -260,7 +260,6 @@ JointRotationFit fit_joint_rotation(const kinematics::SerialChain& chain,
   const bool best_links = chosen->links;
   const double best_threshold = kRelativeThresholds[chosen->threshold];
   m.degree = best_degree;
-  out.relative_threshold = best_threshold;
   std::vector<Eigen::Index> all(static_cast<std::size_t>(n));
   std::iota(all.begin(), all.end(), Eigen::Index{0});
   const TruncatedSvd svd(design(chain, m, best_links, joints_rad, dq_rad, all),

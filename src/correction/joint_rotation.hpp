@@ -32,7 +32,6 @@ struct JointRotationFit {
   double cv_rms_rad = 0.0;  ///< RMS angle of the held-out fiducials' g - prediction [rad]
   int columns = 0;          ///< the chosen design's columns (the constant's 3 included)
   int rank = 0;             ///< combinations kept: the others were not identifiable
-  double relative_threshold = 0.0;  ///< singular values kept above this share of the largest
 };
 
 /// Fits g to `g_robot_rad` (3 x J) at joints `joints_rad` (n x J) jointly with a constant

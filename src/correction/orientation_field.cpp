@@ -128,6 +128,7 @@ OrientationCvRow orientation_row(const CrossValidationRow& row,
 struct JointOrientationFit {
   detail::JointRotationFit fit{};
   std::vector<Eigen::Vector3d> e{};  ///< e(q_j), zero when it does not enter
+  std::optional<Eigen::MatrixXd> dq_rad{};  ///< dq(q_j) when the terms scale them
 };
 
 JointOrientationFit fit_joint_orientation(const Corrector* positions, const CorrectorData& data,
@@ -137,10 +138,9 @@ JointOrientationFit fit_joint_orientation(const Corrector* positions, const Corr
   for (const PositionRotation which :
        {PositionRotation::kFull, PositionRotation::kJointAngles,
         PositionRotation::kScaledJointAngles, PositionRotation::kNone}) {
+    if (which != PositionRotation::kNone && positions == nullptr) continue;
     const bool with_e =
         which == PositionRotation::kFull || which == PositionRotation::kJointAngles;
-    if (which == PositionRotation::kScaledJointAngles && positions == nullptr) continue;
-    if (with_e && positions == nullptr) continue;
     JointOrientationFit candidate;
     candidate.e.assign(n, Eigen::Vector3d::Zero());
     std::vector<Eigen::Matrix3d> left(n);
@@ -154,21 +154,21 @@ JointOrientationFit fit_joint_orientation(const Corrector* positions, const Corr
       }
       left[j] = rotation_exp(candidate.e[j]) * rotations[j];
     }
-    // The residual D_j = exp(-(e + g)(q_j)) C, C the registration's rotation error (and the
-    // marker's misalignment), to the first order about C's estimate C0.
+    // The residual D_j = exp(-e(q_j)) exp(-g(q_j)) C, C the registration's rotation error (and
+    // the marker's misalignment); g to the first order about C's estimate C0.
     const Eigen::Matrix3d C0 = rotation_mean(left);
     Points3 g(3, data.size());
     for (std::size_t j = 0; j < n; ++j) {
       g.col(static_cast<Eigen::Index>(j)) = -rotation_log(left[j] * C0.transpose());
     }
-    std::optional<Eigen::MatrixXd> dq;
     if (which == PositionRotation::kScaledJointAngles) {
-      dq = Eigen::MatrixXd(data.joints_rad.rows(), data.size());
+      Eigen::MatrixXd& dq = candidate.dq_rad.emplace(data.joints_rad.rows(), data.size());
       for (Eigen::Index j = 0; j < data.size(); ++j) {
-        dq->col(j) = *positions->joint_angle_errors_rad(data.joints_rad.col(j));
+        dq.col(j) = *positions->joint_angle_errors_rad(data.joints_rad.col(j));
       }
     }
-    candidate.fit = detail::fit_joint_rotation(*data.robot, data.joints_rad, g, dq ? &*dq : nullptr);
+    candidate.fit = detail::fit_joint_rotation(*data.robot, data.joints_rad, g,
+                                               candidate.dq_rad ? &*candidate.dq_rad : nullptr);
     candidate.fit.terms.position_rotation = which;
     if (!best || candidate.fit.cv_rms_rad < best->fit.cv_rms_rad) best = std::move(candidate);
   }
@@ -285,8 +285,9 @@ OrientationCorrector OrientationCorrector::fit(const Corrector& positions,
     const auto col = static_cast<Eigen::Index>(j);
     // As fitted: D_j = exp(-e_j) exp(-g_j) C, composed rather than summed, since e(q) may be
     // radians (DH deltas positions cannot tell apart) that g(q) takes back.
+    // The joint-angle errors the fit scaled, computed once there.
     const std::optional<Eigen::VectorXd> dq =
-        positions_joint ? positions.joint_angle_errors_rad(data.joints_rad.col(col)) : std::nullopt;
+        joint->dq_rad ? std::optional<Eigen::VectorXd>(joint->dq_rad->col(col)) : std::nullopt;
     model[j] = rotation_exp(-joint->e[j]) *
                rotation_exp(-detail::joint_rotation_rad(out.joint_terms_, *data.robot,
                                                         data.joints_rad.col(col),
