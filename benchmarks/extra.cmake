@@ -22,3 +22,8 @@ target_compile_definitions(vrreg_benchmarks PRIVATE VRREG_SOURCE_DIR="${PROJECT_
 add_executable(vrreg_serve_load ${CMAKE_CURRENT_SOURCE_DIR}/serve_load.cpp)
 target_link_libraries(vrreg_serve_load PRIVATE Boost::headers Threads::Threads)
 vrreg_set_warnings(vrreg_serve_load)
+# How honest an extrapolated correction's sd is (docs/uncertainty.md): a program that prints the
+# RMS of TRE/sd table per physics, method and distance.
+add_executable(vrreg_extrapolation_study ${CMAKE_CURRENT_SOURCE_DIR}/extrapolation_study.cpp)
+target_link_libraries(vrreg_extrapolation_study PRIVATE vrreg::vrreg)
+vrreg_set_warnings(vrreg_extrapolation_study)

@@ -26,6 +26,7 @@ struct CorrectArgs {
   InterpolationFlags interpolation;
   std::string output;
   std::string robot;
+  RobotLinkFlags links;
   bool json = false;
   std::optional<double> angle_sd_limit_mrad;
 };
@@ -39,7 +40,10 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   options.refit = args.interpolation.refit;
   options.extrapolate = args.interpolation.extrapolate;
   options.exact = args.interpolation.exact;
-  if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
+  if (!args.robot.empty()) {
+    const kinematics::SerialChain* remembered = model.robot ? &*model.robot : nullptr;
+    options.robot = robot_from_args(args.robot, {}, args.links.links(remembered));
+  }
   const MeasurementSet points = read_measurements(args.points, read_options);
   CorrectResult r = correct(model, points, options);
   if (r.orientation && args.angle_sd_limit_mrad) {
@@ -71,6 +75,7 @@ void run_correct_unchecked(const CorrectArgs& args, const RegistrationModel& mod
   if (r.cross_validation) print_cross_validation(*r.cross_validation);
   std::printf("  interpolation                 %s: %s\n", to_string(c.method_used),
               c.layout.c_str());
+  if (c.guard && !c.guard->applied) print_guard(*c.guard);
   print_predicted_sd(c, std::nullopt);
   if (r.orientation) print_orientation_correction(*r.orientation);
   if (c.n_flagged > 0) {
@@ -106,6 +111,7 @@ void add_correct_command(CLI::App& app) {
   add_robot_option(*cmd, "--robot", args->robot,
                    "with --interpolation joint or auto: the robot whose joints the file gives "
                    "(ur5, lwr4, ... or a robot file, its tool the marker); default: the model's");
+  args->links.add_to(*cmd, "--robot; default: the links the model's robot was taken between");
   cmd->add_flag("--json", args->json, "print a JSON summary instead of the table");
   cmd->add_option("--angle-sd-limit-mrad", args->angle_sd_limit_mrad,
                   "flag points whose predicted orientation sd is above this, mrad "

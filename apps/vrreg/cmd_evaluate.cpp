@@ -29,6 +29,7 @@ struct EvaluateArgs {
   StrategyFlags strategy;
   std::string per_target;
   std::string robot;
+  RobotLinkFlags links;
   bool json = false;
 };
 
@@ -40,7 +41,10 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   options.extrapolate = args.interpolation.extrapolate;
   options.exact = args.interpolation.exact;
   apply_evaluate_flags(args.strategy, options);
-  if (!args.robot.empty()) options.robot = robot_from_args(args.robot, {});
+  if (!args.robot.empty()) {
+    const kinematics::SerialChain* remembered = model.robot ? &*model.robot : nullptr;
+    options.robot = robot_from_args(args.robot, {}, args.links.links(remembered));
+  }
   const EvaluateResult r = evaluate(model, read_measurements(args.targets), options);
   const ImprovementSummary& s = r.summary;
   const TargetCorrection& c = r.correction;
@@ -64,6 +68,7 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   if (r.cross_validation) print_cross_validation(*r.cross_validation);
   std::printf("  interpolation                 %s: %s\n", to_string(c.method_used),
               c.layout.c_str());
+  if (c.guard && !c.guard->applied) print_guard(*c.guard);
   if (c.n_flagged > 0) {
     std::printf(
         "  not correctable               %d target%s (%s; left uncorrected, RMS_T %s mm as "
@@ -137,6 +142,7 @@ void add_evaluate_command(CLI::App& app) {
   add_robot_option(*cmd, "--robot", args->robot,
                    "with --interpolation joint or auto: the robot whose joints the files give "
                    "(ur5, lwr4, ... or a robot file, its tool the marker); default: the model's");
+  args->links.add_to(*cmd, "--robot; default: the links the model's robot was taken between");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
   cmd->callback([args] { run_evaluate(*args); });
 }

@@ -21,11 +21,13 @@ struct FkArgs {
   std::vector<double> joints;
   bool degrees = false;
   std::vector<double> tool_mm;
+  RobotLinkFlags links;
   bool json = false;
 };
 
 void run_fk(const FkArgs& args) {
-  const kinematics::SerialChain chain = robot_from_args(args.robot, args.tool_mm);
+  const kinematics::SerialChain chain =
+      robot_from_args(args.robot, args.tool_mm, args.links.links());
   check_finite(args.joints, "joint values");
   VRREG_THROW_UNLESS(static_cast<int>(args.joints.size()) == chain.n_joints(),
                      "robot '" << chain.name() << "' has " << chain.n_joints() << " joints, got "
@@ -37,7 +39,7 @@ void run_fk(const FkArgs& args) {
     if (!args.degrees) {
       q(i) = v;
     } else {
-      q(i) = chain.row(i).prismatic() ? units::mm_to_m(v) : units::deg_to_rad(v);
+      q(i) = chain.prismatic(i) ? units::mm_to_m(v) : units::deg_to_rad(v);
     }
   }
   const Eigen::Isometry3d pose = kinematics::forward_kinematics(chain, q);
@@ -53,6 +55,7 @@ void run_fk(const FkArgs& args) {
     j["frame"] = pose_frame_description(chain);
     j["q_rad"] = std::vector<double>(q.data(), q.data() + q.size());
     j["q_deg"] = shown_joints_json(chain, q);
+    if (chain.coupled()) j["joint_names"] = joint_names_json(chain);
     pose_to_json(pose, j);
     if (config) {
       j["config"] = config->to_string();
@@ -72,6 +75,7 @@ void run_fk(const FkArgs& args) {
   for (int i = 0; i < q.size(); ++i) std::printf(" %.6f", shown_joint_value(chain, i, q(i)));
   std::printf("%s", prismatic_note(chain).c_str());
   std::printf("%s\n", in_limits ? "" : "   (outside the joint limits)");
+  if (chain.coupled()) std::printf("  joint variables   %s\n", coupled_joints_text(chain).c_str());
   const std::string xyz = xyz_mm_text(pose.translation());
   const std::string rpy = rpy_deg_text(pose.linear());
   std::printf("  position [mm]     %s\n", xyz.c_str());
@@ -98,6 +102,8 @@ void run_fk(const FkArgs& args) {
   if (!args.tool_mm.empty()) {
     std::printf(" --tool-mm %g %g %g", args.tool_mm[0], args.tool_mm[1], args.tool_mm[2]);
   }
+  if (!args.links.tip_link.empty()) std::printf(" --tip-link %s", args.links.tip_link.c_str());
+  if (!args.links.base_link.empty()) std::printf(" --base-link %s", args.links.base_link.c_str());
   std::printf("\n");
 }
 
@@ -117,6 +123,7 @@ void add_fk_command(CLI::App& app) {
   cmd->add_option("--tool-mm", args->tool_mm,
                   "TCP offset X Y Z in the flange frame, mm (replaces the robot's tool)")
       ->expected(3);
+  args->links.add_to(*cmd, "ROBOT");
   cmd->add_flag("--json", args->json, "print one JSON object");
   cmd->callback([args] { run_fk(*args); });
 }

@@ -30,6 +30,7 @@ struct IkArgs {
   std::optional<double> psi_deg;
   std::vector<double> tool_mm;
   std::vector<double> current_deg;
+  RobotLinkFlags links;
   bool json = false;
 };
 
@@ -121,7 +122,8 @@ nlohmann::json ik_json(const kinematics::SerialChain& chain, const Eigen::Isomet
                        const std::optional<kinematics::PsiIntervalsResult>& psi_ranges);
 
 void run_ik(const IkArgs& args) {
-  const kinematics::SerialChain chain = robot_from_args(args.robot, args.tool_mm);
+  const kinematics::SerialChain chain =
+      robot_from_args(args.robot, args.tool_mm, args.links.links());
   const Eigen::Isometry3d t = target_pose(args);
   std::optional<double> psi_rad;
   if (args.psi_deg) {
@@ -143,7 +145,7 @@ void run_ik(const IkArgs& args) {
     Eigen::VectorXd current(chain.n_joints());
     for (int i = 0; i < chain.n_joints(); ++i) {
       const double shown = args.current_deg[static_cast<std::size_t>(i)];
-      current(i) = chain.row(i).prismatic() ? units::mm_to_m(shown) : units::deg_to_rad(shown);
+      current(i) = chain.prismatic(i) ? units::mm_to_m(shown) : units::deg_to_rad(shown);
     }
     r = kinematics::inverse_kinematics_nearest(chain, t, current, psi_rad);
   }
@@ -231,6 +233,7 @@ void add_ik_command(CLI::App& app) {
                   "solution a controller picks (nearest, 2 pi shifts included; a numerical IK "
                   "starts from them)")
       ->expected(1, kinematics::kMaxJoints);
+  args->links.add_to(*cmd, "ROBOT");
   cmd->add_flag("--json", args->json,
                 "print one JSON object {\"solutions\": [{\"q_rad\", \"config\", ...}], ...}");
   cmd->callback([args] { run_ik(*args); });

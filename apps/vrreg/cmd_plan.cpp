@@ -3,6 +3,8 @@
 // cube of fiducials on a grid (placement tolerance +-S, spacing A), the d_min > 2.5 sigma_noise
 // check (Eq. 9), joints for every location nearest its part point's, and a visiting order; the
 // plan is written as a CSV a robot program (or `vrreg simulate --plan`) can follow.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -14,6 +16,7 @@
 #include "plan_program_cli.hpp"
 #include "robot_cli.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/atomic_write.hpp"
 #include "vrreg/io/file_error.hpp"
@@ -41,7 +44,7 @@ std::string lower(std::string text) {
 
 // The robot, the planning options and where their defaults came from.
 PlanSetup make_setup(const PlanArgs& args) {
-  PlanSetup s{robot_from_args(args.robot, args.tool_mm), {}, {}, {}};
+  PlanSetup s{robot_from_args(args.robot, args.tool_mm, args.links.links()), {}, {}, {}};
   const std::string name = lower(args.robot);
   std::optional<simulation::Testbed> testbed;
   if (name == "ur5" || name == "lwr4") testbed = simulation::testbed_by_name(name);
@@ -109,6 +112,36 @@ PlanSetup make_setup(const PlanArgs& args) {
   return s;
 }
 
+// Monitor points, with what they cannot see and how long a check takes on the robot.
+void add_monitor_notes(const PlanArgs& args, planning::PlanResult& plan, PlanSetup& setup) {
+  const planning::MonitorChoice choice = planning::add_monitor_points(plan, args.monitor);
+  setup.notes.push_back(
+      "monitor points: " + std::to_string(args.monitor) +
+      " fiducial locations spread over the volume, as 'monitor-*' (role monitor), read in " +
+      std::to_string(args.monitor_visits) +
+      " visits at registration and at every check (vrreg check, docs/monitoring.md)");
+  if (choice.coplanar) {
+    setup.notes.push_back(
+        "monitor points on one plane (" + format_fixed(1e3 * choice.off_plane_rms_m, 1) +
+        " mm RMS off it): a change along its normal that is zero on it (the robot tilting or "
+        "stretching out of that plane) moves none of them; " +
+        (args.monitor < planning::kDefaultMonitorPoints
+             ? std::string("4 off one plane see it (--monitor without a count)")
+             : std::string("the plan's fiducials offer none off it")));
+  }
+  planning::ProgramOptions program;
+  if (args.repeats > 0) program.repeats = args.repeats;
+  const planning::ProgramDuration check = planning::program_duration(
+      planning::monitor_program_locations(plan, args.monitor_visits), program);
+  setup.notes.push_back(fmt::format(
+      "a check on the robot (--monitor-program): {} stops, about {:.1f} min: {:.0f} s of joint "
+      "moves (movej v {:.2f} rad/s, a {:.2f} rad/s^2), {:.0f} s settling, {:.0f} s for {} "
+      "readings per stop at {:.0f} Hz (the operator's confirmations not counted)",
+      check.stops, check.total_s() / 60.0, check.motion_s, program.joint_speed_rad_s,
+      program.joint_accel_rad_s2, check.settle_s, check.readings_s, program.repeats,
+      planning::kTrackerRateHz));
+}
+
 void run_plan_unchecked(const PlanArgs& args) {
   PlanSetup setup = make_setup(args);
   const std::vector<io::PartRecord> records = io::read_parts_csv(args.parts);
@@ -141,14 +174,7 @@ void run_plan_unchecked(const PlanArgs& args) {
         std::to_string(poses.n_unreachable) +
         " unreachable, left out); register with --estimate-marker-offset");
   }
-  if (args.monitor > 0) {
-    planning::add_monitor_points(plan, args.monitor);
-    setup.notes.push_back(
-        "monitor points: " + std::to_string(args.monitor) +
-        " fiducial locations spread over the volume, as 'monitor-*' (role monitor), read in " +
-        std::to_string(args.monitor_visits) +
-        " visits at registration and at every check (vrreg check, docs/monitoring.md)");
-  }
+  if (args.monitor > 0) add_monitor_notes(args, plan, setup);
   VRREG_THROW_UNLESS(args.monitor_program.empty() || args.monitor > 0,
                      "--monitor-program needs --monitor");
   // Every output is made before any is written, then all are written or none.
@@ -201,6 +227,7 @@ void add_plan_command(CLI::App& app) {
                    "ur5, lwr4 (defaults from the simulated test bed), ur3, ur10, ur5e, or a robot "
                    "file (URDF, or JSON/YAML)")
       ->required();
+  args->links.add_to(*cmd, "--robot");
   cmd->add_option("--sigma-noise-mm", args->sigma_noise_mm,
                   "noise sigma_noise in mm for d_min > 2.5 sigma_noise (Eq. 9); default the "
                   "paper's: 0.114 (Table 1, UR5), 0.077 for lwr4 (section 5.2)")
@@ -228,7 +255,10 @@ void add_plan_command(CLI::App& app) {
       ->check(CLI::Range(0.1, 60.0));
   cmd->add_option("--monitor", args->monitor,
                   "add N monitor points (fiducial locations spread over the volume, role "
-                  "monitor) that vrreg check reads again later (docs/monitoring.md); 3 or more")
+                  "monitor) that vrreg check reads again later (docs/monitoring.md); without N, "
+                  "4 off one plane (3 lie on a plane and miss a change along its normal)")
+      ->expected(0, 1)
+      ->default_str(std::to_string(planning::kDefaultMonitorPoints))
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--monitor-visits", args->monitor_visits,
                   "visits of each monitor point in the programs (the robot's repeatability "

@@ -53,7 +53,8 @@ RegisterOptions register_options(const RegisterArgs& args) {
   options.procedure2 = register_procedure2(args.strategy);
   options.sigma_l.force_exact = args.exact_sigma_l;
   if (!args.marker_offset.enabled() && !args.marker_offset.robot.empty()) {
-    options.robot = robot_from_args(args.marker_offset.robot, {});  // the joint-space field model
+    // the joint-space field model
+    options.robot = robot_from_args(args.marker_offset.robot, {}, args.marker_offset.links.links());
   }
   return options;
 }
@@ -155,6 +156,7 @@ void run_register_unchecked(const RegisterArgs& args) {
     std::printf("  interpolation stored          %s (evaluate's and correct's default)\n",
                 to_string(model.interpolation.method));
   }
+  if (model.corrector && model.corrector->guard()) print_guard(*model.corrector->guard());
   if (model.orientation_corrector) print_orientation_field(*model.orientation_corrector);
   if (!args.output.empty()) std::printf("  model written to %s\n", args.output.c_str());
 }

@@ -26,8 +26,8 @@ class NoSolution : public std::runtime_error {
 };
 
 /// Thrown by `vrreg check` after it printed its answer when the cell changed: main exits with
-/// `status` (10 the sensor moved, 11 the robot drifted, 12 one monitor point moved) and prints
-/// nothing more, so a cell controller can act on the status alone.
+/// `status` (10 the sensor moved, 11 the robot drifted, 12 one monitor point moved, 13 noisier
+/// today) and prints nothing more, so a cell controller can act on the status alone.
 class CellChanged : public std::runtime_error {
  public:
   CellChanged(int exit_status, const std::string& what)

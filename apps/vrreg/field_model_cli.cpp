@@ -12,17 +12,18 @@ namespace vrreg::cli {
 void print_cross_validation(const CrossValidation& cv) {
   if (cv.folds == 1) {
     std::printf("  cross-validation              one held-out sample (a large cell: more than %lld "
-                "fiducials; fold shuffle seed %llu); compared on the %lld fiducials every "
-                "method predicted\n",
+                "fiducials; fold shuffle seed %llu); ranked on the %lld fiducials any "
+                "method predicted, its misses at their uncorrected error\n",
                 static_cast<long long>(kLargeCellFiducials),
-                static_cast<unsigned long long>(cv.seed), static_cast<long long>(cv.n_common));
+                static_cast<unsigned long long>(cv.seed), static_cast<long long>(cv.n_ranked));
   } else {
     std::printf("  cross-validation              %d folds over the fiducials (fold shuffle seed "
-                "%llu); compared on the %lld fiducials every method predicted\n",
+                "%llu); ranked on the %lld fiducials any method predicted, its misses at their "
+                "uncorrected error\n",
                 cv.folds, static_cast<unsigned long long>(cv.seed),
-                static_cast<long long>(cv.n_common));
+                static_cast<long long>(cv.n_ranked));
   }
-  std::printf("    method       compared     own (predicted)             x / y / z                     "
+  std::printf("    method         ranked     own (predicted)             x / y / z                     "
               "time\n");
   for (const CrossValidationRow& row : cv.rows) {
     if (!row.applicable) {
@@ -31,7 +32,7 @@ void print_cross_validation(const CrossValidation& cv) {
       continue;
     }
     std::printf("    %-10s   %8s mm  %8s mm (%5lld)   %s mm   %7.2f s%s\n",
-                to_string(row.method), format_mm(row.rms_common_m).c_str(),
+                to_string(row.method), format_mm(row.rms_ranked_m).c_str(),
                 format_mm(row.rms_m).c_str(), static_cast<long long>(row.n_predicted),
                 format_mm3(row.rms_axis_m).c_str(), row.seconds,
                 row.method == cv.chosen ? "   <- chosen" : "");
@@ -52,9 +53,27 @@ void print_predicted_sd(const TargetCorrection& c,
 }
 
 const char* why_not_correctable(const TargetCorrection& c) {
-  const bool none =
-      !c.stencils.empty() && c.stencils.front().status == StencilStatus::kTooFewFiducials;
-  return none ? "too few fiducials" : "outside the fiducials";
+  if (c.guard && !c.guard->applied) return to_string(StencilStatus::kNotBetterThanNone);
+  const StencilStatus first = c.stencils.empty() ? StencilStatus::kOk : c.stencils.front().status;
+  if (first == StencilStatus::kTooFewFiducials || first == StencilStatus::kFlatLayout)
+    return to_string(first);
+  return "outside the fiducials";
+}
+
+void print_guard(const CorrectionGuard& guard) {
+  if (!guard.judged) {
+    std::printf("  correction guard              not judged (%s): applied\n",
+                with_flags(guard.note).c_str());
+    return;
+  }
+  std::printf("  correction guard              %s: cross-validated %s mm %s uncorrected %s mm "
+              "(%s, %lld held-out fiducials)%s\n",
+              guard.applied ? "applied" : "NOT APPLIED", format_mm(guard.cv_rms_m).c_str(),
+              guard.applied ? "<" : ">=", format_mm(guard.uncorrected_rms_m).c_str(),
+              to_string(guard.judged_by), static_cast<long long>(guard.n_judged),
+              guard.applied ? ""
+                            : "; every target is answered uncorrected (correction not better "
+                              "than none)");
 }
 
 void print_orientation_field(const OrientationCorrector& field) {

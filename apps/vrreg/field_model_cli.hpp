@@ -19,8 +19,13 @@ void print_predicted_sd(const TargetCorrection& c,
                         const std::optional<UncertaintyCalibration>& calibration);
 
 /// Why the flagged points of `c` were not corrected, for evaluate's and correct's summary:
-/// "too few fiducials" when none could be, else "outside the fiducials".
+/// "too few fiducials" or "flat layout" when none could be, "correction not better than none"
+/// when the guard held the correction back, else "outside the fiducials".
 const char* why_not_correctable(const TargetCorrection& c);
+
+/// The guard's line: applied or not, the cross-validated and the uncorrected RMS it compared,
+/// or why it could not judge.
+void print_guard(const CorrectionGuard& guard);
 
 /// register's lines on the orientation field: method, cross-validated and uncorrected RMS angle,
 /// whether it is applied, and the methods compared.

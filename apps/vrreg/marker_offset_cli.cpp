@@ -40,6 +40,7 @@ void MarkerOffsetFlags::add_to(CLI::App& command) {
                    "--marker-offset-mm, which replace its tool by the marker's offset, and, with "
                    "its tool as the marker's offset, stored in the model for --interpolation "
                    "joint (and auto)");
+  links.add_to(command, "--robot");
   command
       .add_option("--min-orientation-spread", min_orientation_spread,
                   "with --estimate-marker-offset: smallest RMS tilt [rad] for which the offset is "
@@ -59,7 +60,7 @@ void run_register_with_marker_offset(const std::string& fiducials_path,
                                      const MarkerOffsetFlags& flags, const RegisterOptions& options,
                                      const std::string& output, bool json) {
   flags.check();
-  const kinematics::SerialChain robot = robot_from_args(flags.robot, {});
+  const kinematics::SerialChain robot = robot_from_args(flags.robot, {}, flags.links.links());
   MarkerOffsetOptions estimation;
   estimation.min_orientation_spread = flags.min_orientation_spread;
   estimation.joint_offset_sigma_rad = units::deg_to_rad(flags.joint_offset_sigma_deg);

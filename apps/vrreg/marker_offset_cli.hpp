@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "robot_cli.hpp"
 #include "vrreg/pipeline/register_fiducials.hpp"
 
 namespace vrreg::cli {
@@ -15,6 +16,7 @@ struct MarkerOffsetFlags {
   bool estimate = false;
   std::vector<double> known_mm;  ///< --marker-offset-mm: the offset given, not estimated
   std::string robot;
+  RobotLinkFlags links;  ///< --tip-link, --base-link of a URDF robot
   double min_orientation_spread = 0.02;
   double joint_offset_sigma_deg = 0.0;  ///< the robot's joint zero-offset uncertainty
   void add_to(CLI::App& command);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "robot_cli.hpp"
 #include "vrreg/io/plan_csv.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
 #include "vrreg/planning/plan.hpp"
@@ -18,6 +19,7 @@ struct PlanArgs {
   double halfwidth_mm = 0.0;
   double spacing_mm = 0.0;
   std::string robot;
+  RobotLinkFlags links;  ///< --tip-link, --base-link of a URDF robot
   std::optional<double> sigma_noise_mm;
   bool force = false;
   std::vector<double> tool_mm;

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "robot_cli.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 
+#include "file_options.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
@@ -20,9 +22,30 @@ void check_finite(const std::vector<double>& values, const char* what) {
   }
 }
 
+void RobotLinkFlags::add_to(CLI::App& command, const std::string& robot_option) {
+  not_a_file(command, command.add_option("--tip-link", tip_link,
+                                         "with a URDF robot (" + robot_option +
+                                             "): the link the TCP is on (needed when several "
+                                             "leaves are equally deep)"));
+  not_a_file(command, command.add_option("--base-link", base_link,
+                                         "with a URDF robot (" + robot_option +
+                                             "): the link whose frame poses are in (default the "
+                                             "root)"));
+}
+
+io::UrdfChainOptions RobotLinkFlags::links(const kinematics::SerialChain* remembered) const {
+  // A model remembers the links its URDF robot was taken between: the defaults of a URDF named
+  // again; a link given now replaces both.
+  if (remembered != nullptr && tip_link.empty() && base_link.empty()) {
+    return {remembered->urdf_base_link(), remembered->urdf_tip_link(), true};
+  }
+  return {base_link, tip_link};
+}
+
 kinematics::SerialChain robot_from_args(const std::string& robot,
-                                        const std::vector<double>& tool_mm) {
-  kinematics::SerialChain chain = io::load_robot(robot);
+                                        const std::vector<double>& tool_mm,
+                                        const io::UrdfChainOptions& links) {
+  kinematics::SerialChain chain = io::load_robot(robot, links);
   if (tool_mm.empty()) return chain;
   check_finite(tool_mm, "--tool-mm");
   Eigen::Isometry3d tool = Eigen::Isometry3d::Identity();
@@ -85,7 +108,7 @@ nlohmann::json degrees_json(const Eigen::Ref<const Eigen::VectorXd>& q_rad) {
 namespace vrreg::cli {
 
 double shown_joint_value(const kinematics::SerialChain& chain, int i, double q) {
-  return chain.row(i).prismatic() ? units::m_to_mm(q) : units::rad_to_deg(q);
+  return chain.prismatic(i) ? units::m_to_mm(q) : units::rad_to_deg(q);
 }
 
 nlohmann::json shown_joints_json(const kinematics::SerialChain& chain,
@@ -95,10 +118,33 @@ nlohmann::json shown_joints_json(const kinematics::SerialChain& chain,
   return out;
 }
 
+nlohmann::json joint_names_json(const kinematics::SerialChain& chain) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const kinematics::JointVariable& v : chain.couplings().variables) out.push_back(v.name);
+  return out;
+}
+
+std::string coupled_joints_text(const kinematics::SerialChain& chain) {
+  const kinematics::JointCouplings& c = chain.couplings();
+  std::string out;
+  for (std::size_t v = 0; v < c.variables.size(); ++v) {
+    out += (out.empty() ? "q" : ", q") + std::to_string(v + 1) + " " + c.variables[v].name;
+  }
+  std::string followers;
+  for (std::size_t r = 0; r < c.rows.size(); ++r) {
+    const kinematics::JointCoupling& k = c.rows[r];
+    if (k.multiplier == 1.0 && k.offset == 0.0) continue;
+    followers += (followers.empty() ? "" : ", ") + std::string("row ") + std::to_string(r + 1) +
+                 " = " + format_general(k.multiplier, 6) + " q" + std::to_string(k.variable + 1);
+    if (k.offset != 0.0) followers += " + " + format_general(k.offset, 6);
+  }
+  return followers.empty() ? out : out + " (" + followers + ")";
+}
+
 std::string prismatic_note(const kinematics::SerialChain& chain) {
   std::string joints;
   for (int i = 0; i < chain.n_joints(); ++i) {
-    if (chain.row(i).prismatic()) joints += (joints.empty() ? "q" : ", q") + std::to_string(i + 1);
+    if (chain.prismatic(i)) joints += (joints.empty() ? "q" : ", q") + std::to_string(i + 1);
   }
   return joints.empty() ? "" : " (" + joints + " in mm: prismatic)";
 }

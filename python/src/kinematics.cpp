@@ -16,9 +16,11 @@
 namespace vrreg::python {
 namespace {
 
-// A built-in name or a robot file (DH JSON/YAML, or URDF), as `--robot` on the command line.
-kinematics::SerialChain chain_named(const std::string& robot, const py::object& tool) {
-  const kinematics::SerialChain chain = io::load_robot(robot);
+// A built-in name or a robot file (DH JSON/YAML, or URDF, between `base_link` and `tip_link`
+// when given), as `--robot` with `--base-link` and `--tip-link` on the command line.
+kinematics::SerialChain chain_named(const std::string& robot, const py::object& tool,
+                                    const std::string& tip_link, const std::string& base_link) {
+  const kinematics::SerialChain chain = io::load_robot(robot, {base_link, tip_link});
   if (tool.is_none()) return chain;
   const Eigen::VectorXd offset = vector_from(tool, "tool", 3);
   return chain.with_tool(Eigen::Isometry3d(Eigen::Translation3d(offset)));
@@ -42,21 +44,26 @@ Eigen::Isometry3d pose_from(const py::object& pose) {
 void bind_kinematics(py::module_& m) {
   m.def(
       "fk",
-      [](const PathText& robot, const py::object& q, const py::object& tool) {
-        const kinematics::SerialChain chain = chain_named(robot.text, tool);
+      [](const PathText& robot, const py::object& q, const py::object& tool,
+         const std::string& tip_link, const std::string& base_link) {
+        const kinematics::SerialChain chain = chain_named(robot.text, tool, tip_link, base_link);
         const Eigen::VectorXd q_rad = vector_from(q, "q", chain.n_joints());
         return matrix_copy(kinematics::forward_kinematics(chain, q_rad).matrix());
       },
       py::arg("robot"), py::arg("q"), py::kw_only(), py::arg("tool") = py::none(),
+      py::arg("tip_link") = "", py::arg("base_link") = "",
       "T_base_tcp (4, 4) at joints q [rad; m for a prismatic joint] of a built-in robot ('ur3', "
       "'ur5', 'ur10', 'ur5e', 'lwr4') or a robot file (DH JSON/YAML, or URDF); translation in "
-      "METRES, base frame. tool: (3,) TCP offset in the flange frame [m].");
+      "METRES, base frame. tool: (3,) TCP offset in the flange frame [m]. tip_link, base_link: "
+      "the URDF links the chain runs between (a URDF's mimic joints follow the joints they "
+      "mimic: q holds the commanded joints only).");
 
   m.def(
       "ik",
       [](const PathText& robot, const py::object& pose, std::optional<double> psi,
-         const py::object& tool, bool joint_limits) {
-        const kinematics::SerialChain chain = chain_named(robot.text, tool);
+         const py::object& tool, bool joint_limits, const std::string& tip_link,
+         const std::string& base_link) {
+        const kinematics::SerialChain chain = chain_named(robot.text, tool, tip_link, base_link);
         const Eigen::Isometry3d t = pose_from(pose);
         kinematics::IkOptions options;
         options.apply_joint_limits = joint_limits;
@@ -85,7 +92,8 @@ void bind_kinematics(py::module_& m) {
         return d;
       },
       py::arg("robot"), py::arg("pose"), py::kw_only(), py::arg("psi") = py::none(),
-      py::arg("tool") = py::none(), py::arg("joint_limits") = true,
+      py::arg("tool") = py::none(), py::arg("joint_limits") = true, py::arg("tip_link") = "",
+      py::arg("base_link") = "",
       "Every IK solution of TCP pose `pose` ((4, 4), translation in METRES, base frame) of a "
       "built-in robot or a robot file (analytic for UR and LWR chains; else numerical, one per "
       "configuration class found): a dict with q (S, n_joints) [rad], configs (labels such as "
@@ -93,7 +101,8 @@ void bind_kinematics(py::module_& m) {
       "singular, status "
       "('ok', 'unreachable', 'outside-limits') and message. psi: LWR 4+ arm angle [rad] "
       "(default: free, each configuration at 0 or the feasible arm angle nearest 0; LWR results "
-      "add psi, each solution's [rad]); tool: (3,) TCP offset in the flange frame [m].");
+      "add psi, each solution's [rad]); tool: (3,) TCP offset in the flange frame [m]; "
+      "tip_link, base_link: as fk's.");
   m.def("robots", &kinematics::builtin_robot_names, "Names fk and ik accept.");
 }
 

@@ -34,8 +34,9 @@ void bind_monitoring(py::module_& m) {
       .def_property_readonly(
           "verdict",
           [](const CheckResult& r) { return std::string(to_string(r.statistics.verdict)); },
-          "'valid', 'rigid change' (the sensor moved), 'smooth change' (the robot drifted) or "
-          "'outlier' (one monitor point moved)")
+          "'valid', 'rigid change' (the sensor moved), 'smooth change' (the robot drifted), "
+          "'outlier' (one monitor point moved) or 'noisier today' (nothing found, the readings "
+          "scatter more than at registration)")
       .def_property_readonly("message", [](const CheckResult& r) { return r.statistics.message; })
       .def_property_readonly(
           "change_rms", [](const CheckResult& r) { return r.statistics.change_rms_m; },
@@ -114,21 +115,23 @@ void bind_monitoring(py::module_& m) {
   m.def(
       "update",
       [](const RegistrationModel& model, const py::object& points, const std::string& change,
-         const std::string& parent, const std::string& time) {
+         const std::string& parent, const std::string& time, bool even_if_unchanged) {
         VRREG_THROW_UNLESS(change == "bump" || change == "drift",
                            "`change` must be 'bump' or 'drift', got '" << change << "'");
         UpdateOptions options;
         options.change = change == "bump" ? CellChange::kBump : CellChange::kDrift;
         options.parent = parent;
         options.time = time.empty() ? io::utc_now() : time;
+        options.even_if_unchanged = even_if_unchanged;
         const MeasurementSet& today = measurements_of(points, "points");
         py::gil_scoped_release nogil;
         return update_model(model, today, options);
       },
       py::arg("model"), py::arg("points"), py::kw_only(), py::arg("change"), py::arg("parent") = "",
-      py::arg("time") = "",
+      py::arg("time") = "", py::arg("even_if_unchanged") = false,
       "A new model version from monitor and fiducial rows read today: after a bump the sensor's "
-      "move (the field kept), after a drift an affine change and a refit.");
+      "move (the field kept), after a drift an affine change and a refit. Refused when today's "
+      "monitor rows, checked again, show no change, unless even_if_unchanged.");
 }
 
 }  // namespace vrreg::python

@@ -57,7 +57,7 @@ py::object cross_validation_dict(const std::optional<CrossValidation>& cv) {
     d["method"] = std::string(to_string(row.method));
     d["applicable"] = row.applicable;
     d["note"] = with_keywords(row.note);
-    d["rms_common"] = row.rms_common_m;
+    d["rms_ranked"] = row.rms_ranked_m;
     d["rms"] = row.rms_m;
     d["n_predicted"] = row.n_predicted;
     d["seconds"] = row.seconds;
@@ -69,6 +69,20 @@ py::object cross_validation_dict(const std::optional<CrossValidation>& cv) {
   out["chosen"] = std::string(to_string(cv->chosen));
   out["rows"] = rows;
   return out;
+}
+
+// The correction guard's figures as a dict (metres), or None when the corrector was not guarded.
+py::object guard_dict(const std::optional<CorrectionGuard>& g) {
+  if (!g) return py::none();
+  py::dict d;
+  d["judged"] = g->judged;
+  d["applied"] = g->applied;
+  d["judged_by"] = std::string(to_string(g->judged_by));
+  d["cv_rms"] = g->cv_rms_m;
+  d["uncorrected_rms"] = g->uncorrected_rms_m;
+  d["n_judged"] = g->n_judged;
+  d["note"] = g->note;
+  return d;
 }
 
 // The brief report of io (one place for the figures a result shows first), as Python's repr.
@@ -159,6 +173,11 @@ void bind_correction_members(py::class_<Result>& c) {
           [](const Result& r) { return cross_validation_dict(r.cross_validation); },
           "interpolation 'auto': the K-fold cross-validation table [m] and its choice (dict)")
       .def_property_readonly(
+          "guard", [](const Result& r) { return guard_dict(r.correction.guard); },
+          "whether the correction was applied: its cross-validated RMS against the uncorrected "
+          "one [m] (judged, applied, judged_by, cv_rms, uncorrected_rms, n_judged, note); not "
+          "applied: every point uncorrected, status NOT_BETTER_THAN_NONE. None: not guarded")
+      .def_property_readonly(
           "orientation",
           [](const Result& r) {
             if constexpr (std::is_same_v<Result, EvaluateResult>) {
@@ -198,7 +217,8 @@ void bind_results(py::module_& m) {
       .value("OUTSIDE_SUPPORT", StencilStatus::kOutsideSupport)
       .value("EXTRAPOLATED", StencilStatus::kExtrapolated)
       .value("TOO_FEW_FIDUCIALS", StencilStatus::kTooFewFiducials)
-      .value("NOT_BETTER_THAN_NONE", StencilStatus::kNotBetterThanNone);
+      .value("NOT_BETTER_THAN_NONE", StencilStatus::kNotBetterThanNone)
+      .value("FLAT_LAYOUT", StencilStatus::kFlatLayout);
 
   py::class_<RegisterResult> reg(m, "RegisterResult", "What register found; lengths in metres.");
   reg.def_property_readonly(

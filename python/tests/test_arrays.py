@@ -46,9 +46,11 @@ def test_non_contiguous_and_float32_inputs():
 def test_correct_returns_n_by_3_views():
     axis = np.arange(5) * 0.025
     robot = np.array(np.meshgrid(axis, axis, axis, indexing="ij")).reshape(3, -1).T.copy()
-    sensor = robot + [0.1, 0.2, 0.3] + np.random.default_rng(2).normal(scale=1e-4, size=robot.shape)
+    # A systematic error well above the noise: the guard applies the correction.
+    sensor = (robot + [0.1, 0.2, 0.3] + 5e-4 * np.sin(20 * robot)
+              + np.random.default_rng(2).normal(scale=5e-5, size=robot.shape))
     model = vrreg.register(sensor, robot).model
-    c = vrreg.correct(model, sensor[:20])
+    c = vrreg.correct(model, sensor[25:45])  # the second layer: interior and face nodes
     assert c.method == "grid"
     assert c.corrected.shape == (20, 3) and c.corrected.dtype == np.float64
     assert not c.corrected.flags.writeable
@@ -58,8 +60,24 @@ def test_correct_returns_n_by_3_views():
     # registered position, which the 0.1 mm noise moves off the node); boundary ones fall outside.
     ok = c.status == int(vrreg.StencilStatus.OK)
     assert 0 < np.count_nonzero(ok) < 20
-    assert np.allclose(c.corrected[ok], robot[:20][ok], rtol=0, atol=1e-5)
+    assert np.allclose(c.corrected[ok], robot[25:45][ok], rtol=0, atol=1e-5)
     assert c.status_names[int(np.argmax(~ok))] == "outside grid"
+
+
+def test_a_correction_not_better_than_none_is_not_applied():
+    axis = np.arange(5) * 0.025
+    robot = np.array(np.meshgrid(axis, axis, axis, indexing="ij")).reshape(3, -1).T.copy()
+    # Noise alone: interpolating it is worse than leaving it.
+    sensor = robot + [0.1, 0.2, 0.3] + np.random.default_rng(2).normal(scale=1e-4, size=robot.shape)
+    model = vrreg.register(sensor, robot).model
+    c = vrreg.correct(model, sensor[:20])
+    assert c.guard is not None and c.guard["judged"] and not c.guard["applied"]
+    assert c.guard["cv_rms"] >= c.guard["uncorrected_rms"] > 0
+    # Every point uncorrected: those the grid holds say why, the others are outside it.
+    not_better = c.status == int(vrreg.StencilStatus.NOT_BETTER_THAN_NONE)
+    outside = c.status == int(vrreg.StencilStatus.OUTSIDE_GRID)
+    assert np.count_nonzero(not_better) > 0 and np.all(not_better | outside)
+    assert np.array_equal(c.corrected, c.uncorrected)
 
 
 N = 10**6

@@ -64,3 +64,19 @@ def test_urdf_robots_fk_and_ik():
     assert result["status"] == "ok" and len(result["configs"]) >= 1
     for solution in result["q"]:
         assert np.max(np.abs(vrreg.fk(rail, solution)[:3, 3] - pose[:3, 3])) < 1e-12
+
+
+def test_urdf_mimic_joints_and_tip_link():
+    # A lifting column whose two stages mimic a side-branch drive, under a 6-axis arm: 7
+    # commanded joints for 8 moving joints; the wrist's camera is as deep as tool0.
+    lift = str(URDF / "lift_arm.urdf")
+    with pytest.raises(ValueError, match="name the tip link"):
+        vrreg.fk(lift, np.zeros(7))
+    q = np.array([0.4, 0.3, -1.2, 1.5, -1.8, -1.57, 0.2])
+    pose = vrreg.fk(lift, q, tip_link="tool0")
+    result = vrreg.ik(lift, pose, tip_link="tool0")
+    assert result["status"] == "ok" and result["q"].shape[1] == 7
+    for solution in result["q"]:
+        assert np.max(np.abs(vrreg.fk(lift, solution, tip_link="tool0") - pose)) < 1e-9
+    with pytest.raises(ValueError, match="built-in ur5"):
+        vrreg.fk("ur5", np.zeros(6), tip_link="tool0")

@@ -73,7 +73,7 @@ def test_bad_calls_say_what(tmp_path):
             f"{','.join(map(repr, _sensor(np.array([400.0 + 10 * k, (k % 3) * 20.0, (k // 3) * 15.0]))))},0\n"
             for k in range(9)]
     plain = vrreg.register(_write(tmp_path / "plain.csv", rows)).model
-    with pytest.raises(vrreg.FileError, match="no monitor points"):
+    with pytest.raises(vrreg.InputError, match="no monitor points"):
         vrreg.check(plain, monitors)
     with pytest.raises(vrreg.InputError, match="Measurements"):
         vrreg.check(plain, np.zeros((3, 3)))

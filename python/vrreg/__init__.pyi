@@ -34,6 +34,7 @@ class StencilStatus:
     EXTRAPOLATED: StencilStatus
     TOO_FEW_FIDUCIALS: StencilStatus
     NOT_BETTER_THAN_NONE: StencilStatus
+    FLAT_LAYOUT: StencilStatus
     __members__: ClassVar[dict[str, StencilStatus]]
     def __init__(self, value: int) -> None: ...
     def __int__(self) -> int: ...
@@ -188,6 +189,8 @@ class _Corrected:
     @property
     def cross_validation(self) -> Optional[dict[str, Any]]: ...
     @property
+    def guard(self) -> Optional[dict[str, Any]]: ...
+    @property
     def orientation(self) -> Optional[dict[str, Any]]: ...
 
 class EvaluateResult(_Corrected):
@@ -333,7 +336,7 @@ def check(model: Model, monitors: Measurements, *, false_alarm_rate: float = 0.0
           visit_sd: Optional[float] = None, remeasure: int = 10) -> CheckResult:
     """Today's monitor readings against the model's: valid, sensor moved, point moved, drift."""
 def update(model: Model, points: Measurements, *, change: str, parent: str = "",
-           time: str = "") -> UpdateResult:
+           time: str = "", even_if_unchanged: bool = False) -> UpdateResult:
     """A new model version from a few points after a bump or a drift (lineage recorded)."""
 def load_model(path: _Path) -> Model: ...
 def model_from_json(text: str) -> Model: ...
@@ -344,10 +347,13 @@ def improvement(unc_tre: _ArrayLike, cor_tre: _ArrayLike) -> dict[str, Any]: ...
 def estimate_marker_offset(robot: str, joints: _ArrayLike, sensor: _ArrayLike, *,
                            min_orientation_spread: float = 0.02) -> dict[str, Any]:
     """T_robot_sensor and the marker offset in the flange frame (m), with uncertainties."""
-def fk(robot: _Path, q: _ArrayLike, *, tool: Optional[_ArrayLike] = None) -> _Array:
-    """T_base_tcp (4, 4), translation in metres; robot: built-in name or robot file (DH, URDF)."""
+def fk(robot: _Path, q: _ArrayLike, *, tool: Optional[_ArrayLike] = None, tip_link: str = "",
+       base_link: str = "") -> _Array:
+    """T_base_tcp (4, 4), translation in metres; robot: built-in name or robot file (DH, URDF);
+    tip_link, base_link: the URDF links the chain runs between."""
 def ik(robot: _Path, pose: _ArrayLike, *, psi: Optional[float] = None,
-       tool: Optional[_ArrayLike] = None, joint_limits: bool = True) -> dict[str, Any]:
+       tool: Optional[_ArrayLike] = None, joint_limits: bool = True, tip_link: str = "",
+       base_link: str = "") -> dict[str, Any]:
     """Every IK solution: q (S, n) [rad], configs, config_indices, singular, status (LWR: psi,
     each solution's arm angle; free when psi is None)."""
 def robots() -> list[str]: ...

@@ -63,6 +63,9 @@ TargetCorrection correct_targets(const CorrectionField& field,
       field.fiducials_robot_m - T.scale * (T.rotation * field.corrections_sensor_m);
   CorrectorOptions options;
   options.interpolation = settings;
+  // The paper's Eq. 7-8 as its experiments run them, one field per target set: unguarded, so
+  // the tables are the method's own (the commands' correctors are guarded).
+  options.guard = false;
   return Corrector::fit(data, options)
       .correct(CorrectionQuery(targets_sensor_m, targets_robot_nominal_m, Eigen::MatrixXd(0, 0),
                                targets_sequence));

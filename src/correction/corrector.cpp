@@ -10,12 +10,12 @@
 #include <limits>
 
 #include "buffers.hpp"
+#include "far_field.hpp"
 #include "method_support.hpp"
 #include "method_tabulated.hpp"
 #include "point_index.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/progress.hpp"
-#include "vrreg/registration/fitzpatrick.hpp"
 
 namespace vrreg {
 namespace {
@@ -51,6 +51,27 @@ const Eigen::MatrixXd& no_joints() {
   return none;
 }
 
+// The guard of a corrector fitted with `fitted`: from its own cross-validation when it has one
+// (auto's chosen row, a field model's, trilinear's and scattered's), else from trilinear's (the
+// paper's stencils: a complete grid or an octuplet's cubes lose their corners when a fold is
+// held out; trilinear interpolates with the same weights between the same nodes). Scattered
+// does not stand in: on a small lattice it predicts only the few interior fiducials, with a
+// Delaunay mesh much worse than the stencil it would judge (the 27-fiducial cube held the
+// octuplet back where it halves the error).
+CorrectionGuard guard_of(const CorrectorData& data, const MethodSettings& settings,
+                         const CorrectorOptions& options,
+                         const std::optional<CrossValidationRow>& judged,
+                         InterpolationMethod fitted) {
+  const std::vector<Eigen::Index> units = fold_units(data.fiducials_robot_m);
+  if (judged) return judge_correction(*judged, data, units);
+  const std::vector<int> fold_of = assign_folds(units, options.cv_folds, options.cv_seed);
+  const bool own = fitted == InterpolationMethod::kTrilinear ||
+                   fitted == InterpolationMethod::kScattered;
+  const InterpolationMethod judge = own ? fitted : InterpolationMethod::kTrilinear;
+  return judge_correction(cross_validate(judge, data, settings, fold_of, units, options.cv_folds),
+                          data, units);
+}
+
 }  // namespace
 
 void CorrectorOptions::validate() const {
@@ -83,78 +104,14 @@ struct Corrector::Impl {
   std::uint64_t cv_seed = 1;
   bool tabulated = false;
   std::optional<CrossValidation> cross_validation;
+  std::optional<CorrectionGuard> guard;
   SdSource sd_source = SdSource::kNone;
   double cv_rms_m = 0.0;
   Eigen::VectorXd cv_squared_error_m2;  ///< per fiducial, NaN where not predicted (kLocalCv)
   /// kLocalCv: the fiducials with a held-out error, indexed, and their errors in that order.
   std::optional<detail::PointIndex> known_index;
-  /// Extrapolation (CorrectionQuery::extrapolate): the field's gradient, the median over the
-  /// fiducials of |d correction| / |d position| to the nearest fiducial, and its spread,
-  /// sqrt(2) x the RMS (3D) of the corrections about their mean: the RMS difference of the
-  /// field at two points too far apart to be correlated [m].
-  double field_gradient = 0.0;
-  double field_spread_m = 0.0;
-  /// The registration's own error grows with the distance from the fiducials (its rotation's
-  /// lever arm, Fitzpatrick's TRE): the fiducials' positions and their localisation error
-  /// <FLE^2> [m^2], from the known noise, else half the median squared correction difference of
-  /// nearest neighbours (noise and the field's change over a spacing).
-  Points3 fiducials_robot_m;
-  double fle_sq_m2 = 0.0;
-
-  void field_scales(const CorrectorData& data) {
-    const Eigen::Index n = data.size();
-    const Eigen::Vector3d mean_m = data.corrections_sensor_m.rowwise().mean();
-    field_spread_m = std::sqrt(2.0 * (data.corrections_sensor_m.colwise() - mean_m).squaredNorm() /
-                               static_cast<double>(std::max<Eigen::Index>(n, 1)));
-    const detail::PointIndex index(data.fiducials_robot_m);
-    std::vector<double> ratio;
-    std::vector<double> difference_sq;
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const std::vector<Eigen::Index> two = index.nearest_k(data.fiducials_robot_m.col(j), 2);
-      if (two.size() < 2) continue;
-      const double d_m = (data.fiducials_robot_m.col(two[1]) - data.fiducials_robot_m.col(j)).norm();
-      if (d_m <= 0.0) continue;
-      const double difference_m =
-          (data.corrections_sensor_m.col(two[1]) - data.corrections_sensor_m.col(j)).norm();
-      ratio.push_back(difference_m / d_m);
-      difference_sq.push_back(difference_m * difference_m);
-    }
-    if (ratio.empty()) return;
-    const auto mid = ratio.begin() + static_cast<std::ptrdiff_t>(ratio.size() / 2);
-    std::nth_element(ratio.begin(), mid, ratio.end());
-    field_gradient = *mid;
-    const auto mid_sq = difference_sq.begin() + static_cast<std::ptrdiff_t>(difference_sq.size() / 2);
-    std::nth_element(difference_sq.begin(), mid_sq, difference_sq.end());
-    fiducials_robot_m = data.fiducials_robot_m;
-    fle_sq_m2 = data.noise_sd_m ? 3.0 * *data.noise_sd_m * *data.noise_sd_m : 0.5 * *mid_sq;
-  }
-
-  /// The sd of the correction at `edge_m` (sd `sd_edge_m` there) used at `at_m`, `moved_m`
-  /// beyond the support: the field's change over the distance, up to its spread, and the
-  /// registration's growth from the edge to the point.
-  [[nodiscard]] double extrapolated_sd_m(double sd_edge_m, double moved_m, const Eigen::Vector3d& at_m,
-                                         const Eigen::Vector3d& edge_m) const {
-    // A move without a length (a joint clamped into its range) takes the whole spread.
-    const double growth_m =
-        std::isfinite(moved_m) ? std::min(field_gradient * moved_m, field_spread_m) : field_spread_m;
-    const double registration_sq_m2 =
-        std::max(0.0, expected_tre_squared(fiducials_robot_m, at_m, fle_sq_m2) -
-                          expected_tre_squared(fiducials_robot_m, edge_m, fle_sq_m2));
-    // Outside the joint ranges (another arm configuration) the robot's errors are not those the
-    // registration absorbed: the rigid fit of the cell's systematic field tilts the mapping, and
-    // nothing measured bounds the difference. Its growth is Fitzpatrick's with a localisation
-    // error common to all fiducials (one independent sample, not N) whose mean square is the
-    // spread's: the difference of two draws of the field, the one absorbed and the one met there.
-    double tilt_sq_m2 = 0.0;
-    if (!std::isfinite(moved_m)) {
-      const Eigen::Vector3d centroid_m = fiducials_robot_m.rowwise().mean();
-      const double variance_m2 = field_spread_m * field_spread_m;
-      const auto n = static_cast<double>(fiducials_robot_m.cols());
-      tilt_sq_m2 = n * std::max(0.0, expected_tre_squared(fiducials_robot_m, at_m, variance_m2) -
-                                         expected_tre_squared(fiducials_robot_m, centroid_m, variance_m2));
-    }
-    return std::sqrt(sd_edge_m * sd_edge_m + growth_m * growth_m + registration_sq_m2 + tilt_sq_m2);
-  }
+  /// What extrapolation (CorrectionQuery::extrapolate) knows of the field (far_field.hpp).
+  std::optional<detail::FarField> far;
   Eigen::VectorXd known_squared_m2;
 
   /// The index of the fiducials whose held-out error is known (kLocalCv).
@@ -201,12 +158,43 @@ struct Corrector::Impl {
     }
   }
 
-  /// Corrects the points of `out` outside the support (CorrectionQuery::extrapolate).
+  /// The sd the corrector gives a correction the method made at registered `at_m`: the
+  /// method's own, its local or global cross-validation, or none (NaN).
+  [[nodiscard]] double method_sd_m(const MethodPredictions& p, Eigen::Index j,
+                                   const Eigen::Vector3d& at_m) const {
+    return fitted->has_own_sd()                ? p.sd_m(j)
+           : sd_source == SdSource::kLocalCv   ? local_sd_m(at_m)
+           : sd_source == SdSource::kGlobalCv  ? cv_rms_m
+                                               : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  /// Whether a point the method flagged `status` at registered `at_m` lies beyond its support
+  /// (so is extrapolated on request): outside the support, grid or hull, or an octuplet's
+  /// missing corner outside the fiducials' box; a hole inside the layout is not.
+  [[nodiscard]] bool beyond_support(StencilStatus status, const Eigen::Vector3d& at_m) const {
+    switch (status) {
+      case StencilStatus::kOutsideSupport:
+      case StencilStatus::kOutsideGrid:
+      case StencilStatus::kOutsideHull:
+        return true;
+      case StencilStatus::kMissingCorner:
+        return (at_m.array() < far->box_lo_m().array()).any() ||
+               (at_m.array() > far->box_hi_m().array()).any();
+      default:
+        return false;
+    }
+  }
+
+  /// Corrects the points of `out` beyond the support (CorrectionQuery::extrapolate), every
+  /// method alike (far_field.hpp): with the correction at the support's nearest point (the
+  /// method's own clamp, else the fiducials' box), the method's where it answers there, else the
+  /// mean of the fiducials nearest it; its sd widened for what lies between.
   void extrapolate(const CorrectionQuery& query, TargetCorrection& out) const {
     std::vector<Eigen::Index> outside;
     for (std::size_t i = 0; i < out.stencils.size(); ++i) {
-      if (out.stencils[i].status == StencilStatus::kOutsideSupport)
-        outside.push_back(static_cast<Eigen::Index>(i));
+      const auto ii = static_cast<Eigen::Index>(i);
+      if (beyond_support(out.stencils[i].status, out.uncorrected_robot_m.col(ii)))
+        outside.push_back(ii);
     }
     const auto k = static_cast<Eigen::Index>(outside.size());
     if (k == 0) return;
@@ -217,31 +205,51 @@ struct Corrector::Impl {
       at_m.col(j) = out.uncorrected_robot_m.col(outside[static_cast<std::size_t>(j)]);
       if (joints) q_rad.col(j) = query.joints_rad.col(outside[static_cast<std::size_t>(j)]);
     }
-    const std::optional<Eigen::VectorXd> moved_m = fitted->clamp_to_support(at_m, q_rad);
-    if (!moved_m) return;
+    Points3 anchor_m = at_m;
+    std::optional<Eigen::VectorXd> moved_m = fitted->clamp_to_support(anchor_m, q_rad);
+    if (!moved_m) moved_m = detail::SupportBox::clamp_to_box(anchor_m, far->box_lo_m(), far->box_hi_m());
+    // The method at the anchors, unless it reads the points' nominal positions (the octuplet):
+    // an anchor has none.
     MethodPredictions p;
-    p.corrections_sensor_m.resize(3, k);
-    p.stencils.resize(static_cast<std::size_t>(k));
+    p.corrections_sensor_m.setZero(3, k);
+    p.stencils.assign(static_cast<std::size_t>(k), detail::flagged_stencil(StencilStatus::kOutsideSupport));
     if (fitted->has_own_sd()) p.sd_m.resize(k);
-    const Points3 none(3, 0);
-    const MethodQuery edge{at_m, none, q_rad, {}};
-    const Eigen::Index block = std::max<Eigen::Index>(fitted->block_size(), 1);
-    for (Eigen::Index begin = 0; begin < k; begin += block)
-      fitted->predict(edge, begin, std::min(k, begin + block), p);
+    if (fitted->judges_gaps()) p.gap_sd_m.setZero(k);
+    if (!fitted->needs().nominal_robot) {
+      const Points3 none(3, 0);
+      const MethodQuery edge{anchor_m, none, q_rad, {}};
+      const Eigen::Index block = std::max<Eigen::Index>(fitted->block_size(), 1);
+      for (Eigen::Index begin = 0; begin < k; begin += block)
+        fitted->predict(edge, begin, std::min(k, begin + block), p);
+    }
+    if (out.predicted_sd_m.size() == 0)
+      out.predicted_sd_m = Eigen::VectorXd::Constant(query.sensor_m.cols(), std::numeric_limits<double>::quiet_NaN());
     for (Eigen::Index j = 0; j < k; ++j) {
-      if (p.stencils[static_cast<std::size_t>(j)].status != StencilStatus::kOk) continue;
       const Eigen::Index i = outside[static_cast<std::size_t>(j)];
-      out.stencils[static_cast<std::size_t>(i)].status = StencilStatus::kExtrapolated;
-      out.corrections_sensor_m.col(i) = p.corrections_sensor_m.col(j);
-      out.corrected_sensor_m.col(i) = query.sensor_m.col(i) + p.corrections_sensor_m.col(j);
-      out.corrected_robot_m.col(i) = T_robot_sensor.apply(Eigen::Vector3d(out.corrected_sensor_m.col(i)));
-      if (out.predicted_sd_m.size() > 0) {
-        const double sd_edge_m = fitted->has_own_sd()                 ? p.sd_m(j)
-                                 : sd_source == SdSource::kLocalCv ? local_sd_m(at_m.col(j))
-                                                                   : cv_rms_m;
-        out.predicted_sd_m(i) = extrapolated_sd_m(sd_edge_m, (*moved_m)(j),
-                                                  out.uncorrected_robot_m.col(i), at_m.col(j));
+      const Eigen::Vector3d anchor = anchor_m.col(j);
+      Eigen::Vector3d anchor_correction_m;
+      double sd_anchor_m = 0.0;
+      far->nearest_mean(anchor, anchor_correction_m, sd_anchor_m);
+      // A joint clamped into its range leaves the model a combination of joints no fiducial had:
+      // its value there is no guide (the joint model of a 60 mm cube, 60 mm beyond it: 10.9 mm
+      // off where the uncorrected mapping was 0.78 mm off).
+      if (std::isfinite((*moved_m)(j)) &&
+          p.stencils[static_cast<std::size_t>(j)].status == StencilStatus::kOk) {
+        anchor_correction_m = p.corrections_sensor_m.col(j);
+        const double own_sd_m = method_sd_m(p, j, anchor);
+        if (std::isfinite(own_sd_m)) sd_anchor_m = own_sd_m;
+        if (p.gap_sd_m.size() > 0) sd_anchor_m = std::hypot(sd_anchor_m, p.gap_sd_m(j));
       }
+      const Eigen::Vector3d at = at_m.col(j);
+      anchor_correction_m += far->trend_step_sensor_m(at, anchor);
+      out.stencils[static_cast<std::size_t>(i)] = Stencil{};
+      out.stencils[static_cast<std::size_t>(i)].status = StencilStatus::kExtrapolated;
+      out.corrections_sensor_m.col(i) = anchor_correction_m;
+      out.corrected_sensor_m.col(i) = query.sensor_m.col(i) + anchor_correction_m;
+      out.corrected_robot_m.col(i) = T_robot_sensor.apply(Eigen::Vector3d(out.corrected_sensor_m.col(i)));
+      const bool clamped = !std::isfinite((*moved_m)(j));  // a joint moved: no length
+      out.predicted_sd_m(i) =
+          far->extrapolated_sd_m(sd_anchor_m, (*moved_m)(j), at, anchor, clamped);
       --out.n_flagged;
     }
   }
@@ -280,13 +288,17 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
     impl->sd_source = cv_sd_source(row.method);
     if (impl->sd_source == SdSource::kLocalCv) impl->cv_squared_error_m2 = row.squared_error_m2;
   };
+  std::optional<CrossValidationRow> judged;  // the guard's cross-validation, when it has one
   if (method == InterpolationMethod::kAuto) {
     FitOutcome chosen;
     impl->cross_validation = choose_by_cross_validation(data, settings, options.cv_folds,
                                                         options.cv_seed, &chosen);
     impl->fitted = std::move(chosen.fitted);
     for (const CrossValidationRow& row : impl->cross_validation->rows) {
-      if (row.method == impl->cross_validation->chosen) cross_validated(row);
+      if (row.method == impl->cross_validation->chosen) {
+        cross_validated(row);
+        judged = row;
+      }
     }
     if (impl->fitted->has_own_sd()) {
       impl->sd_source = SdSource::kModel;
@@ -305,8 +317,17 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
       return std::nullopt;
     }
     impl->fitted = std::move(grid.fitted);
-  } else if (method == InterpolationMethod::kKriging) {  // its own posterior sd: no CV needed
-    FitOutcome kriging = fit_method(method, data, settings);
+  } else if (method == InterpolationMethod::kKriging) {  // its own posterior sd; CV for the guard
+    FitOutcome kriging;
+    if (options.guard) {
+      const std::vector<Eigen::Index> units = fold_units(data.fiducials_robot_m);
+      judged = cross_validate(method, data, settings,
+                              assign_folds(units, options.cv_folds, options.cv_seed), units,
+                              options.cv_folds, &kriging);
+      if (!kriging.fitted) kriging = fit_method(method, data, settings);  // folds too few
+    } else {
+      kriging = fit_method(method, data, settings);
+    }
     if (!kriging.fitted) {
       why = "kriging interpolation cannot be used: " + kriging.not_applicable;
       return std::nullopt;
@@ -327,6 +348,7 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
     }
     impl->fitted = std::move(full.fitted);
     cross_validated(row);
+    judged = row;
   } else {
     FitOutcome stencils = fit_method(method, data, settings);
     if (!stencils.fitted) {
@@ -335,8 +357,9 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
     }
     impl->fitted = std::move(stencils.fitted);
   }
+  if (options.guard) impl->guard = guard_of(data, settings, options, judged, impl->fitted->method());
   impl->index_known(data);
-  impl->field_scales(data);
+  impl->far.emplace(data);
   const InterpolationMethod fitted = impl->fitted->method();
   if (options.tabulate && data.size() <= kLargeCellFiducials &&
       (fitted == InterpolationMethod::kKriging || fitted == InterpolationMethod::kRbf)) {
@@ -373,6 +396,7 @@ Corrector Corrector::restore(const SavedCorrector& saved, const CorrectorData& d
   impl->cv_folds = saved.cv_folds;
   impl->cv_seed = saved.cv_seed;
   impl->cross_validation = saved.cross_validation;
+  impl->guard = saved.guard;
   impl->sd_source = saved.sd_source;
   impl->cv_rms_m = saved.cv_rms_m;
   impl->cv_squared_error_m2 = saved.cv_squared_error_m2;
@@ -388,7 +412,7 @@ Corrector Corrector::restore(const SavedCorrector& saved, const CorrectorData& d
                      "the saved corrector is " << to_string(saved.method) << ", restored as "
                                                << to_string(impl->fitted->method()));
   impl->index_known(data);
-  impl->field_scales(data);
+  impl->far.emplace(data);
   return Corrector(std::move(impl));
 }
 
@@ -410,6 +434,7 @@ SavedCorrector Corrector::save() const {
   out.method = impl_->fitted->method();
   out.state = impl_->fitted->save();
   out.cross_validation = impl_->cross_validation;
+  out.guard = impl_->guard;
   out.sd_source = impl_->sd_source;
   out.cv_rms_m = impl_->cv_rms_m;
   out.cv_squared_error_m2 = impl_->cv_squared_error_m2;
@@ -441,6 +466,7 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
   TargetCorrection out;
   out.method_used = method.method();
   out.layout = method.describe();
+  out.guard = m.guard;
   MethodPredictions p;
   detail::allocate_stencils(p.stencils, n);
   detail::allocate_points(p.corrections_sensor_m, n);
@@ -448,6 +474,7 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
   detail::allocate_points(out.corrected_robot_m, n);
   detail::allocate_points(out.uncorrected_robot_m, n);
   if (method.has_own_sd()) p.sd_m.resize(n);
+  if (method.judges_gaps()) p.gap_sd_m.setZero(n);
   const bool with_sd = m.sd_source != SdSource::kNone;
   if (with_sd) out.predicted_sd_m.resize(n);
   const SimilarityTransform& T = m.T_robot_sensor;
@@ -456,6 +483,7 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
   const Eigen::Index block = std::max<Eigen::Index>(method.block_size(), 1);
   const Eigen::Index n_blocks = (n + block - 1) / block;
   std::atomic<int> n_flagged{0};
+  const bool applied = !m.guard || m.guard->applied;
   ProgressStage progress("correcting " + std::to_string(n) + " points", n_blocks);
   const auto register_blocks = [&](Eigen::Index b0, Eigen::Index b1) {
     for (Eigen::Index i = b0 * block; i < std::min(n, b1 * block); ++i)
@@ -468,12 +496,19 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
       const Eigen::Index end = std::min(n, begin + block);
       method.predict(method_query, begin, end, p);
       for (Eigen::Index i = begin; i < end; ++i) {
-        if (p.stencils[static_cast<std::size_t>(i)].status != StencilStatus::kOk) {
+        StencilStatus& status = p.stencils[static_cast<std::size_t>(i)].status;
+        if (!applied && status == StencilStatus::kOk) status = StencilStatus::kNotBetterThanNone;
+        if (status != StencilStatus::kOk) {
           ++flagged;
           p.corrections_sensor_m.col(i).setZero();
           out.corrected_sensor_m.col(i) = query.sensor_m.col(i);
           out.corrected_robot_m.col(i) = out.uncorrected_robot_m.col(i);
-          if (with_sd) out.predicted_sd_m(i) = std::numeric_limits<double>::quiet_NaN();
+          // An unapplied correction's target is off by what an uncorrected fiducial is.
+          if (with_sd) {
+            out.predicted_sd_m(i) = status == StencilStatus::kNotBetterThanNone
+                                        ? m.guard->uncorrected_rms_m
+                                        : std::numeric_limits<double>::quiet_NaN();
+          }
           continue;
         }
         const Eigen::Vector3d corrected = query.sensor_m.col(i) + p.corrections_sensor_m.col(i);
@@ -486,6 +521,7 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
         out.predicted_sd_m(i) = method.has_own_sd()               ? p.sd_m(i)
                                 : m.sd_source == SdSource::kLocalCv ? m.local_sd_m(out.uncorrected_robot_m.col(i))
                                                                     : m.cv_rms_m;
+        if (p.gap_sd_m.size() > 0) out.predicted_sd_m(i) = std::hypot(out.predicted_sd_m(i), p.gap_sd_m(i));
       }
       progress.advance();
     }
@@ -509,7 +545,7 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
   out.stencils = std::move(p.stencils);
   out.corrections_sensor_m = std::move(p.corrections_sensor_m);
   out.n_flagged = n_flagged.load();
-  if (query.extrapolate && out.n_flagged > 0) m.extrapolate(query, out);
+  if (query.extrapolate && applied && out.n_flagged > 0) m.extrapolate(query, out);
   return out;
 }
 
@@ -524,6 +560,8 @@ SdSource Corrector::sd_source() const { return impl_->sd_source; }
 const std::optional<CrossValidation>& Corrector::cross_validation() const {
   return impl_->cross_validation;
 }
+const std::optional<CorrectionGuard>& Corrector::guard() const { return impl_->guard; }
+bool Corrector::applied() const { return !impl_->guard || impl_->guard->applied; }
 std::optional<Eigen::VectorXd> Corrector::joint_angle_errors_rad(
     const Eigen::Ref<const Eigen::VectorXd>& joints_rad) const {
   return impl_->fitted->joint_angle_errors_rad(joints_rad);

@@ -261,28 +261,35 @@ CrossValidation choose_by_cross_validation(const CorrectorData& data,
     fitted.emplace_back();
     out.rows.push_back(cross_validate(m, data, settings, fold_of, units, folds, &fitted.back()));
   }
-  std::vector<char> common(static_cast<std::size_t>(data.size()), 1);
+  // Ranked on every fiducial some method predicted, each method's misses among them at their
+  // uncorrected error (what a target there gets from it). Ranking only on the fiducials every
+  // method predicted (the hull of the fold's training fiducials) favoured the models that are
+  // good in the interior: on real cells kriging over a joint model 1.6x better at the targets.
+  std::vector<char> ranked(static_cast<std::size_t>(data.size()), 0);
   for (const CrossValidationRow& row : out.rows) {
     if (!row.applicable) continue;
     for (Eigen::Index j = 0; j < data.size(); ++j) {
-      if (std::isnan(row.squared_error_m2(j))) common[static_cast<std::size_t>(j)] = 0;
+      if (!std::isnan(row.squared_error_m2(j))) ranked[static_cast<std::size_t>(j)] = 1;
     }
   }
-  out.n_common = std::count(common.begin(), common.end(), char{1});
+  out.n_ranked = std::count(ranked.begin(), ranked.end(), char{1});
   const std::vector<int> count =
-      unit_counts(units, [&](Eigen::Index j) { return common[static_cast<std::size_t>(j)] != 0; });
-  const auto common_units = std::count_if(count.begin(), count.end(), [](int c) { return c > 0; });
+      unit_counts(units, [&](Eigen::Index j) { return ranked[static_cast<std::size_t>(j)] != 0; });
+  const auto ranked_units = std::count_if(count.begin(), count.end(), [](int c) { return c > 0; });
   const CrossValidationRow* best = nullptr;
   for (CrossValidationRow& row : out.rows) {
-    if (!row.applicable || out.n_common == 0) continue;
+    if (!row.applicable || out.n_ranked == 0) continue;
     double sum = 0.0;
     for (Eigen::Index j = 0; j < data.size(); ++j) {
-      if (common[static_cast<std::size_t>(j)] == 0) continue;
+      if (ranked[static_cast<std::size_t>(j)] == 0) continue;
+      const double e = std::isnan(row.squared_error_m2(j))
+                           ? data.corrections_sensor_m.col(j).squaredNorm()
+                           : row.squared_error_m2(j);
       const int c = count[static_cast<std::size_t>(units[static_cast<std::size_t>(j)])];
-      sum += c == 1 ? row.squared_error_m2(j) : row.squared_error_m2(j) / static_cast<double>(c);
+      sum += c == 1 ? e : e / static_cast<double>(c);
     }
-    row.rms_common_m = std::sqrt(sum / static_cast<double>(common_units));
-    if (best == nullptr || row.rms_common_m < best->rms_common_m) best = &row;
+    row.rms_ranked_m = std::sqrt(sum / static_cast<double>(ranked_units));
+    if (best == nullptr || row.rms_ranked_m < best->rms_ranked_m) best = &row;
   }
   VRREG_THROW_UNLESS(best != nullptr,
                      "no interpolation method could be cross-validated on these fiducials");

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "method_support.hpp"
@@ -106,11 +108,38 @@ class LocalDelaunay {
   double tolerance_m_;
 };
 
+// The RMS distance of the fiducials' nominal positions from their best-fitting plane [m], and
+// the largest RMS spread along a principal axis [m].
+std::pair<double, double> thickness_and_extent_m(const CorrectorData& data) {
+  const Points3 centred =
+      data.fiducials_robot_m.colwise() - data.fiducials_robot_m.rowwise().mean();
+  const Eigen::Vector3d variance_m2 =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(centred * centred.transpose() /
+                                                     static_cast<double>(data.size()))
+          .eigenvalues();
+  return {std::sqrt(std::max(variance_m2(0), 0.0)), std::sqrt(std::max(variance_m2(2), 0.0))};
+}
+
+// Within the match tolerance of a plane (or a line): no tetrahedron has a volume.
+bool is_flat(const CorrectorData& data, const MethodSettings& settings) {
+  const auto [thickness_m, extent_m] = thickness_and_extent_m(data);
+  return thickness_m <= settings.match_tolerance_m || thickness_m <= 1e-9 * extent_m;
+}
+
 class ScatteredMethod final : public FittedMethod {
  public:
   ScatteredMethod(const CorrectorData& data, const MethodSettings& settings)
       : corrections_sensor_m_(data.corrections_sensor_m) {
-    if (data.size() > kLargeCellFiducials) {
+    if (is_flat(data, settings)) {
+      // Registration needs three points off a line; interpolation in 3D needs a volume. A flat
+      // layout is answered, every point uncorrected with the reason, not refused.
+      std::ostringstream why;
+      why << "scattered: the " << data.size()
+          << " fiducials lie in a plane or on a line (RMS distance from their plane "
+          << units::m_to_mm(thickness_and_extent_m(data).first)
+          << " mm): no tetrahedron to interpolate in; every point is left uncorrected";
+      flat_ = why.str();
+    } else if (data.size() > kLargeCellFiducials) {
       local_.emplace(data.fiducials_robot_m, settings.match_tolerance_m);
     } else {
       stencils_.emplace(data.fiducials_robot_m, settings.match_tolerance_m);
@@ -121,6 +150,7 @@ class ScatteredMethod final : public FittedMethod {
     return InterpolationMethod::kScattered;
   }
   [[nodiscard]] std::string describe() const override {
+    if (!flat_.empty()) return flat_;
     if (stencils_) return stencils_->describe();
     return "scattered, Delaunay tetrahedron among the nearest of " +
            std::to_string(local_->size()) + " fiducials (64 or more, until its circumsphere "
@@ -132,7 +162,8 @@ class ScatteredMethod final : public FittedMethod {
     for (Eigen::Index i = begin; i < end; ++i) {
       Stencil& stencil = out.stencils[static_cast<std::size_t>(i)];
       const Eigen::Vector3d q_m = query.registered_robot_m.col(i);
-      stencil = stencils_ ? stencils_->stencil(q_m)
+      stencil = !flat_.empty()   ? flagged_stencil(StencilStatus::kFlatLayout)
+                : stencils_      ? stencils_->stencil(q_m)
                 : q_m.allFinite() ? local_->stencil(q_m)
                                   : flagged_stencil(StencilStatus::kOutsideHull);
       if (stencil.status == StencilStatus::kOk) {
@@ -149,10 +180,11 @@ class ScatteredMethod final : public FittedMethod {
   std::optional<ScatteredStencils> stencils_;
   std::optional<LocalDelaunay> local_;
   Points3 corrections_sensor_m_;
+  std::string flat_;  ///< why a flat layout corrects nothing; empty otherwise
 };
 
-// What qhull would refuse, said before it is asked: too few fiducials, two at one position,
-// all in a plane.
+// What qhull would refuse, said before it is asked: too few fiducials, two at one position. (All
+// in a plane is fitted: every point is then answered "flat layout".)
 std::string scattered_unavailable(const CorrectorData& data, const MethodSettings& settings) {
   const Eigen::Index n = data.size();
   if (n < kMinCorrectableFiducials) {
@@ -164,18 +196,6 @@ std::string scattered_unavailable(const CorrectorData& data, const MethodSetting
            " share a nominal robot position (within " +
            std::to_string(units::m_to_mm(settings.match_tolerance_m)) +
            " mm): use one arm configuration per model";
-  }
-  const Points3 centred =
-      data.fiducials_robot_m.colwise() - data.fiducials_robot_m.rowwise().mean();
-  // The RMS distance from the best-fitting plane: within the tolerance, the layout is flat.
-  const Eigen::Vector3d variance_m2 =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(centred * centred.transpose() /
-                                                     static_cast<double>(n))
-          .eigenvalues();
-  const double thickness_m = std::sqrt(std::max(variance_m2(0), 0.0));
-  if (thickness_m <= settings.match_tolerance_m ||
-      thickness_m <= 1e-9 * std::sqrt(variance_m2(2))) {
-    return "the fiducials lie in a plane (or on a line): no tetrahedra to interpolate in";
   }
   return {};
 }

@@ -192,8 +192,20 @@ OrientationCorrector OrientationCorrector::fit(const Corrector& positions,
 
   // Candidates: the joint model (when asked for, or auto with joints) and the tangent fields.
   std::optional<JointOrientationFit> joint;
+  // The orientation terms are per DH row, the commanded joints per variable: a chain with
+  // coupled (URDF mimic) rows would pair them wrongly.
+  const bool coupled = joints_known && data.robot->coupled();
+  VRREG_THROW_UNLESS(!(requested == InterpolationMethod::kJoint && coupled),
+                     "orientation field: the joint model does not take coupled (mimic) joints; "
+                     "register with --interpolation auto or kriging to correct orientations");
+  if (requested == InterpolationMethod::kAuto && coupled) {
+    OrientationCvRow row;
+    row.method = InterpolationMethod::kJoint;
+    row.note = "the robot has coupled (mimic) joints";
+    out.table_.push_back(row);
+  }
   if (requested == InterpolationMethod::kJoint ||
-      (requested == InterpolationMethod::kAuto && joints_known)) {
+      (requested == InterpolationMethod::kAuto && joints_known && !coupled)) {
     VRREG_THROW_UNLESS(joints_known, "orientation field: the joint model needs joints and the robot");
     joint = fit_joint_orientation(positions_joint ? &positions : nullptr, data, rotations);
     OrientationCvRow row;
@@ -209,6 +221,7 @@ OrientationCorrector OrientationCorrector::fit(const Corrector& positions,
   options.interpolation = positions.requested();
   options.nearest_configuration = positions.nearest_configuration();
   options.tabulate = positions.tabulated();
+  options.guard = false;  // the orientations judge themselves (OrientationCorrector::applied)
   std::optional<Corrector> field;
   if (requested == InterpolationMethod::kAuto) {
     // The Cartesian candidates only: the joint-space position model does not apply to rotation
@@ -393,6 +406,10 @@ std::string OrientationCorrector::describe() const {
       out << " (the positions' joint-angle errors and orientation terms)";
     } else if (joint_terms_.position_rotation == PositionRotation::kScaledJointAngles) {
       out << " (the positions' joint-angle errors, each scaled, and orientation terms)";
+    }
+    if (!joint_terms_.periodic.empty()) {
+      out << ", " << joint_terms_.periodic.size() << " cyclic joint-angle error"
+          << (joint_terms_.periodic.size() == 1 ? "" : "s");
     }
     if (joint_terms_.columns > 0) {
       out << ", " << joint_terms_.rank << " of " << joint_terms_.columns

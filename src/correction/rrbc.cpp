@@ -48,6 +48,8 @@ const char* to_string(StencilStatus status) {
       return "too few fiducials";
     case StencilStatus::kNotBetterThanNone:
       return "correction not better than none";
+    case StencilStatus::kFlatLayout:
+      return "flat layout";
   }
   return "unknown";
 }

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "base64_doubles.hpp"
+#include "guard_json.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
 
@@ -93,7 +94,7 @@ ojson table_json(const CrossValidation& cv) {
   ojson out = ojson::object();
   out["folds"] = cv.folds;
   out["seed"] = cv.seed;
-  out["n_common"] = cv.n_common;
+  out["n_ranked"] = cv.n_ranked;
   out["n_units"] = cv.n_units;
   out["chosen"] = to_string(cv.chosen);
   ojson rows = ojson::array();
@@ -106,7 +107,7 @@ ojson table_json(const CrossValidation& cv) {
     row["rms_axis_m"] = {finite(r.rms_axis_m.x(), "cv rms"), finite(r.rms_axis_m.y(), "cv rms"),
                          finite(r.rms_axis_m.z(), "cv rms")};
     row["n_predicted"] = r.n_predicted;
-    row["rms_common_m"] = finite(r.rms_common_m, "cv rms");
+    row["rms_ranked_m"] = finite(r.rms_ranked_m, "cv rms");
     rows.push_back(std::move(row));
   }
   out["rows"] = std::move(rows);
@@ -136,7 +137,9 @@ CrossValidation read_table(const json& item, const std::string& path, const Json
   const json& seed = f.member(item, path, "seed");
   if (!seed.is_number_unsigned()) f.fail(join_path(path, "seed"), "expected a whole number >= 0");
   cv.seed = seed.get<std::uint64_t>();
-  cv.n_common = read_count(item, path, "n_common", f);
+  // Models saved before the ranking counted misses name the figures for the common subset.
+  const bool ranked = item.contains("n_ranked");
+  cv.n_ranked = read_count(item, path, ranked ? "n_ranked" : "n_common", f);
   cv.n_units = read_count(item, path, "n_units", f);
   cv.chosen = read_method(item, path, "chosen", f);
   const json& rows = f.member(item, path, "rows");
@@ -154,7 +157,7 @@ CrossValidation read_table(const json& item, const std::string& path, const Json
     const std::vector<double> axis = f.numbers(r, at, "rms_axis_m", 3);
     row.rms_axis_m = Eigen::Vector3d(axis[0], axis[1], axis[2]);
     row.n_predicted = read_count(r, at, "n_predicted", f);
-    row.rms_common_m = f.number(r, at, "rms_common_m");
+    row.rms_ranked_m = f.number(r, at, ranked ? "rms_ranked_m" : "rms_common_m");
     cv.rows.push_back(std::move(row));
   }
   return cv;
@@ -395,6 +398,7 @@ ojson corrector_json(const SavedCorrector& saved, const std::string& fiducials_f
     out["cv_squared_error_m2"] = with_nulls(saved.cv_squared_error_m2);
   }
   if (saved.cross_validation) out["cross_validation"] = table_json(*saved.cross_validation);
+  if (saved.guard) out["guard"] = guard_json(*saved.guard);
   out["state"] = state_json(saved.state);
   // What was fitted is checked when read back; a method that keeps no state (octuplet,
   // scattered, trilinear) is rebuilt from the fiducials themselves.
@@ -443,6 +447,7 @@ SavedCorrector read_corrector(const json& item, const std::string& path, const J
     out.cross_validation =
         read_table(item.at("cross_validation"), join_path(path, "cross_validation"), f);
   }
+  if (item.contains("guard")) out.guard = read_guard(item.at("guard"), join_path(path, "guard"), f);
   const json& state = f.member(item, path, "state");
   out.state = read_state(state, join_path(path, "state"), to_string(out.method), f);
   check_state_is_the_methods(state, out.method, path, f);
@@ -493,6 +498,16 @@ nlohmann::ordered_json orientation_corrector_json(const SavedOrientationCorrecto
                                           finite(t.constant_rad.z(), "joint terms")};
     if (t.position_joint_scales.size() > 0) {
       out["joint_terms"]["position_joint_scales"] = list(t.position_joint_scales);
+    }
+    if (!t.periodic.empty()) {  // 0-based joints (DH rows), frequencies, then (s, c) per term
+      Eigen::VectorXd joints(std::ssize(t.periodic)), omegas(std::ssize(t.periodic));
+      for (std::size_t m = 0; m < t.periodic.size(); ++m) {
+        joints(static_cast<Eigen::Index>(m)) = t.periodic[m].joint;
+        omegas(static_cast<Eigen::Index>(m)) = t.periodic[m].omega_per_rad;
+      }
+      out["joint_terms"]["periodic_joints"] = list(joints);
+      out["joint_terms"]["periodic_omega_per_rad"] = list(omegas);
+      out["joint_terms"]["periodic_coefficients"] = list(t.periodic_coefficients);
     }
     out["joint_terms"]["columns"] = t.columns;
     out["joint_terms"]["rank"] = t.rank;
@@ -565,6 +580,20 @@ SavedOrientationCorrector read_orientation_corrector(const json& item, const std
     }
     if (t.contains("position_joint_scales")) {
       out.joint_terms.position_joint_scales = vector("position_joint_scales");
+    }
+    if (t.contains("periodic_joints")) {  // files written before them: none
+      const Eigen::VectorXd joints = vector("periodic_joints");
+      const Eigen::VectorXd omegas = vector("periodic_omega_per_rad");
+      if (omegas.size() != joints.size()) {
+        f.fail(join_path(at, "periodic_omega_per_rad"), "expected one per periodic joint");
+      }
+      for (Eigen::Index m = 0; m < joints.size(); ++m) {
+        if (joints(m) != std::floor(joints(m)) || joints(m) < 0 || joints(m) > 64) {
+          f.fail(join_path(at, "periodic_joints"), "expected joint indices 0-64");
+        }
+        out.joint_terms.periodic.push_back({static_cast<int>(joints(m)), omegas(m)});
+      }
+      out.joint_terms.periodic_coefficients = vector("periodic_coefficients");
     }
     if (t.contains("position_rotation")) {  // older files: the whole rotation
       try {

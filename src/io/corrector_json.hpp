@@ -18,7 +18,7 @@ std::string json_fingerprint(const nlohmann::ordered_json& value);
 
 /// {"method", "requested": {method, cube_m, match_tolerance_m}, "nearest_configuration",
 /// "cv_folds", "cv_seed", "sd_source", "cv_rms_m", "cv_squared_error_m2" (null where not
-/// predicted), "cross_validation" (auto: the table without times), "state": {key: number, text
+/// predicted), "cross_validation" (auto: the table without times), "guard" (guard_json.hpp), "state": {key: number, text
 /// or {"shape": [rows, cols], "values": column-major}}, "fitted_from": {"method",
 /// "fiducials_fnv1a64" (`fiducials_fingerprint`), "state_fnv1a64"}}.
 nlohmann::ordered_json corrector_json(const SavedCorrector& saved,

@@ -49,6 +49,12 @@ std::optional<double> parse_finite_double(std::string_view text) {
   return value;
 }
 
+std::string coordinate_out_of_range(double value_m, std::string_view column, std::string_view text) {
+  if (std::abs(value_m) <= kMaxCoordinateM) return {};
+  return "column '" + std::string(column) + "': " + std::string(text) +
+         " is out of range (a coordinate is at most 1 000 km = 1e9 mm from the origin)";
+}
+
 std::optional<int> parse_int(std::string_view text) {
   text = strip_plus(text);
   if (text.empty()) return std::nullopt;

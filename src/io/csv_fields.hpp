@@ -17,6 +17,15 @@ void split_fields(std::string_view line, std::vector<std::string_view>& fields);
 /// A finite double from the whole of `text` (an optional leading '+'); nullopt otherwise.
 std::optional<double> parse_finite_double(std::string_view text);
 
+/// The largest |coordinate| a file may give [m]: 1 000 km. A robot cell spans metres; beyond this
+/// a value is a typing or export error, and squared in a registration's sums (1e308) it
+/// overflows. Millimetres written into a metre column (thousands of "metres") stay below it, so
+/// that the plausibility warning can name the column.
+inline constexpr double kMaxCoordinateM = 1e6;
+
+/// Why coordinate `value_m` [m] is refused (out of range), or empty; `column` names it.
+std::string coordinate_out_of_range(double value_m, std::string_view column, std::string_view text);
+
 /// An int from the whole of `text` (an optional leading '+'); nullopt otherwise.
 std::optional<int> parse_int(std::string_view text);
 

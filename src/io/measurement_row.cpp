@@ -49,12 +49,18 @@ class RowParser {
     return *value;
   }
 
-  Eigen::Vector3d position_m(const std::array<int, 3>& indices) const {
+  Eigen::Vector3d position_m(const std::array<int, 3>& indices, std::string_view point) const {
     Eigen::Vector3d p;
     for (int axis = 0; axis < 3; ++axis) {
-      const double value = number(indices[static_cast<std::size_t>(axis)]);
+      const int index = indices[static_cast<std::size_t>(axis)];
+      const double value = number(index);
       // Dividing by 1000 rounds correctly; multiplying by the inexact 1e-3 may not.
       p(axis) = columns_.length_in_mm ? value / units::kMillimetresPerMetre : value;
+      if (const std::string why = coordinate_out_of_range(p(axis), column_name(index),
+                                                          printable(field(index)));
+          !why.empty()) {
+        fail("point '" + printable(point) + "', " + why);
+      }
     }
     return p;
   }
@@ -79,8 +85,9 @@ class RowParser {
       fail("unknown role '" + printable(field(columns_.role)) +
            "' (expected fiducial, target or monitor)");
     }
-    row.robot_m = columns_.has_robot() ? position_m(columns_.robot) : Eigen::Vector3d::Zero();
-    row.sensor_m = position_m(columns_.sensor);
+    row.robot_m =
+        columns_.has_robot() ? position_m(columns_.robot, row.point) : Eigen::Vector3d::Zero();
+    row.sensor_m = position_m(columns_.sensor, row.point);
     row.config.reset();
     if (columns_.config != MeasurementColumns::kAbsent) row.config = integer(columns_.config);
     row.repeat.reset();

@@ -40,6 +40,42 @@ Eigen::Isometry3d read_matrix(const nlohmann::json& robot, const std::string& ro
   return Eigen::Isometry3d(m);
 }
 
+kinematics::JointCouplings read_couplings(const nlohmann::json& robot,
+                                          const std::string& robot_path, std::size_t n_rows,
+                                          const JsonFields& f) {
+  const std::string rows_path = join_path(robot_path, "joint_couplings");
+  const std::string variables_path = join_path(robot_path, "joint_variables");
+  const nlohmann::json& rows = f.member(robot, robot_path, "joint_couplings");
+  const nlohmann::json& variables = f.member(robot, robot_path, "joint_variables");
+  if (!rows.is_array() || rows.size() != n_rows)
+    f.fail(rows_path, "expected one object per DH row");
+  if (!variables.is_array() || variables.empty() || variables.size() > n_rows) {
+    f.fail(variables_path, "expected 1 to one-per-DH-row joint variables");
+  }
+  kinematics::JointCouplings out;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string at = rows_path + "[" + std::to_string(i) + "]";
+    f.require_object(rows[i], at);
+    out.rows.push_back({f.integer(rows[i], at, "variable"), f.number(rows[i], at, "multiplier"),
+                        f.number(rows[i], at, "offset")});
+  }
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    const std::string at = variables_path + "[" + std::to_string(i) + "]";
+    f.require_object(variables[i], at);
+    kinematics::JointVariable v;
+    v.name = f.string(variables[i], at, "name");
+    const std::string type = f.string(variables[i], at, "type");
+    if (type != "revolute" && type != "prismatic") {
+      f.fail(join_path(at, "type"), "expected \"revolute\" or \"prismatic\"");
+    }
+    if (type == "prismatic") v.type = kinematics::JointType::kPrismatic;
+    const std::vector<double> l = f.numbers(variables[i], at, "limits_rad", 2);
+    v.limits = {l[0], l[1]};
+    out.variables.push_back(std::move(v));
+  }
+  return out;
+}
+
 }  // namespace
 
 ojson chain_json(const kinematics::SerialChain& chain, bool with_tool, const char* what) {
@@ -64,6 +100,28 @@ ojson chain_json(const kinematics::SerialChain& chain, bool with_tool, const cha
       types.push_back(row.prismatic() ? "prismatic" : "revolute");
     }
     robot["joint_types"] = std::move(types);
+  }
+  // Only a chain with joints that follow others (URDF mimic) says how (older files have none).
+  if (chain.coupled()) {
+    ojson couplings = ojson::array();
+    for (const kinematics::JointCoupling& c : chain.couplings().rows) {
+      couplings.push_back({{"variable", c.variable},
+                           {"multiplier", finite_row({c.multiplier}, what, "multiplier")[0]},
+                           {"offset", finite_row({c.offset}, what, "offset")[0]}});
+    }
+    robot["joint_couplings"] = std::move(couplings);
+    ojson variables = ojson::array();
+    for (const kinematics::JointVariable& v : chain.couplings().variables) {
+      variables.push_back(
+          {{"name", v.name},
+           {"type", v.type == kinematics::JointType::kPrismatic ? "prismatic" : "revolute"},
+           {"limits_rad", finite_row({v.limits.lower_rad, v.limits.upper_rad}, what, "limits")}});
+    }
+    robot["joint_variables"] = std::move(variables);
+  }
+  if (!chain.urdf_tip_link().empty()) {
+    robot["urdf_base_link"] = chain.urdf_base_link();
+    robot["urdf_tip_link"] = chain.urdf_tip_link();
   }
   robot["T_base_dh0_m"] = matrix_json(chain.T_base_dh0().matrix(), what, "T_base_dh0");
   if (with_tool) robot["T_flange_tcp_m"] = matrix_json(chain.T_flange_tcp().matrix(), what, "T_flange_tcp");
@@ -111,7 +169,15 @@ kinematics::SerialChain read_chain(const nlohmann::json& robot, const std::strin
                                              ? read_matrix(robot, robot_path, "T_flange_tcp_m", f)
                                              : Eigen::Isometry3d::Identity();
   try {
-    return kinematics::SerialChain(name, rows, joint_limits, T_base_dh0, T_flange_tcp);
+    kinematics::SerialChain chain(name, rows, joint_limits, T_base_dh0, T_flange_tcp);
+    if (robot.contains("joint_couplings") || robot.contains("joint_variables")) {
+      chain = chain.with_couplings(read_couplings(robot, robot_path, rows.size(), f));
+    }
+    if (robot.contains("urdf_tip_link") || robot.contains("urdf_base_link")) {
+      chain = chain.with_urdf_links(f.string(robot, robot_path, "urdf_base_link"),
+                                    f.string(robot, robot_path, "urdf_tip_link"));
+    }
+    return chain;
   } catch (const InputError& e) {
     f.fail(robot_path, e.what());
   }

@@ -1,26 +1,55 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/io/monitor_json.hpp"
 
-#include <fmt/chrono.h>
-
-#include <ctime>
-#include <filesystem>
-#include <sstream>
-
-#include "csv_fields.hpp"
 #include "vrreg/core/units.hpp"
-#include "vrreg/io/atomic_write.hpp"
-#include "vrreg/io/file_error.hpp"
-#include "vrreg/io/input_file.hpp"
 #include "vrreg/io/result_json.hpp"
 
 namespace vrreg::io {
 namespace {
 
-constexpr const char* kHistoryHeader = "time,verdict,change_rms_mm,monitors,source";
-
 nlohmann::json optional_config(const std::optional<int>& config) {
   return config ? nlohmann::json(*config) : nlohmann::json(nullptr);
+}
+
+// (omega [mrad], t [mm]) from (rad, m): both scale by 1e3, the covariance by 1e6.
+nlohmann::json covariance_json(const Eigen::Matrix<double, 6, 6>& covariance) {
+  nlohmann::json cov = nlohmann::json::array();
+  for (int i = 0; i < 6; ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int k = 0; k < 6; ++k) row.push_back(1e6 * covariance(i, k));
+    cov.push_back(std::move(row));
+  }
+  return cov;
+}
+
+nlohmann::json rigid_json(const RigidChange& c) {
+  const Eigen::Vector3d mrad = 1e3 * c.rotation_rad;
+  return {{"rotation_mrad", {mrad.x(), mrad.y(), mrad.z()}},
+          {"rotation_axes_seen", c.rotation_rank},
+          {"translation_mm", json_mm3(c.translation_m)},
+          {"covariance_mrad_mm", covariance_json(c.covariance)},
+          {"monitors_centroid_mm", json_mm3(c.centroid_m)},
+          {"translation_at_monitors_mm", json_mm3(c.translation_at_centroid_m)},
+          {"covariance_at_monitors_mrad_mm", covariance_json(c.covariance_at_centroid)},
+          {"displacement_rms_mm", units::m_to_mm(c.displacement_rms_m)}};
+}
+
+nlohmann::json noise_json(const VisitNoiseComparison& n) {
+  return {{"tested", n.tested},   {"noisier", n.noisier},   {"variance_ratio", n.ratio},
+          {"p_value", n.p_value}, {"then_dof", n.dof_then}, {"today_dof", n.dof_today}};
+}
+
+nlohmann::json onset_json(const CheckResult& r) {
+  const ChangeOnsetTest& o = r.onset;
+  nlohmann::json j = {
+      {"kind", to_string(o.onset)}, {"earlier_checks", o.earlier_checks}, {"times", r.onset_times}};
+  if (o.onset != ChangeOnset::kUnknown) {
+    j["statistic"] = o.statistic;
+    j["bound"] = o.bound;
+    j["fractions"] = o.fractions;
+    j["step_after"] = o.step_after;
+  }
+  return j;
 }
 
 }  // namespace
@@ -33,15 +62,20 @@ nlohmann::json check_json(const CheckResult& r) {
   j["false_alarm_rate"] = r.false_alarm_rate;
   j["n_monitors"] = r.points.size();
   j["model_monitors"] = r.model_monitors;
+  j["model_id"] = r.model_id;
   j["visit_sd_mm"] = units::m_to_mm(r.visit_sd_m);
+  j["today_visit_sd_mm"] = units::m_to_mm(r.today_visit_sd_m);
   j["visit_sd_dof"] = r.variance_dof;
+  j["noise"] = noise_json(r.noise);
   j["change_rms_mm"] = units::m_to_mm(s.change_rms_m);
   j["chi2"] = s.chi2;
   j["dof"] = s.dof;
   if (s.rigid_threshold > 0.0) {
     j["rigid_chi2"] = s.rigid_chi2;
+    j["rigid_dof"] = s.rigid_dof;
     j["rigid_bound"] = s.rigid_threshold;
     j["residual_chi2"] = s.rigid_residual_chi2;
+    j["residual_dof"] = s.residual_dof;
     j["residual_bound"] = s.residual_threshold;
   } else {
     j["bound"] = s.threshold;
@@ -53,26 +87,14 @@ nlohmann::json check_json(const CheckResult& r) {
                       {"baseline_visits", p.baseline_visits},
                       {"today_visits", p.today_visits},
                       {"moved_mm", json_mm3(p.difference_m)},
-                      {"sd_mm", units::m_to_mm(p.difference_sd_m)}});
+                      {"sd_mm", units::m_to_mm(p.difference_sd_m)},
+                      {"today_mean_sd_mm", units::m_to_mm(p.today_mean_sd_m)}});
   }
   j["points"] = std::move(points);
-  if (s.rigid) {
-    const RigidChange& c = *s.rigid;
-    nlohmann::json cov = nlohmann::json::array();
-    for (int i = 0; i < 6; ++i) {
-      nlohmann::json row = nlohmann::json::array();
-      // (omega [mrad], t [mm]): both scale by 1e3 from (rad, m).
-      for (int k = 0; k < 6; ++k) row.push_back(1e6 * c.covariance(i, k));
-      cov.push_back(std::move(row));
-    }
-    j["sensor_moved"] = {
-        {"rotation_mrad",
-         {1e3 * c.rotation_rad.x(), 1e3 * c.rotation_rad.y(), 1e3 * c.rotation_rad.z()}},
-        {"translation_mm", json_mm3(c.translation_m)},
-        {"covariance_mrad_mm", std::move(cov)},
-        {"displacement_rms_mm", units::m_to_mm(c.displacement_rms_m)}};
-  }
+  if (s.rigid) j["sensor_moved"] = rigid_json(*s.rigid);
   if (s.outlier) j["outlier"] = r.points[static_cast<std::size_t>(*s.outlier)].point;
+  j["onset"] = onset_json(r);
+  j["blind_spots"] = s.blind_spots;
   j["remeasure"] = r.remeasure;
   j["source"] = r.source;
   return j;
@@ -100,6 +122,10 @@ nlohmann::json update_json(const UpdateResult& r) {
     for (int i = 0; i < 3; ++i) a.push_back({r.drift(i, 0), r.drift(i, 1), r.drift(i, 2)});
     j["drift"] = {{"per_metre", std::move(a)}, {"offset_mm", json_mm3(r.drift.col(3))}};
   }
+  j["today_check"] =
+      r.today_check ? nlohmann::json({{"verdict", to_string(r.today_check->statistics.verdict)},
+                                      {"message", r.today_check->statistics.message}})
+                    : nlohmann::json(nullptr);
   nlohmann::json lineage = nlohmann::json::array();
   for (const ModelUpdate& u : r.model.lineage) {
     lineage.push_back({{"change", u.change},
@@ -111,71 +137,6 @@ nlohmann::json update_json(const UpdateResult& r) {
   }
   j["lineage"] = std::move(lineage);
   return j;
-}
-
-std::vector<CheckHistoryRow> read_check_history(const std::string& path) {
-  const std::string text = read_input_file(path);
-  std::istringstream in(text);
-  std::string line;
-  std::vector<CheckHistoryRow> rows;
-  std::vector<std::string_view> fields;
-  std::size_t number = 0;
-  bool header = false;
-  while (std::getline(in, line)) {
-    ++number;
-    const std::string_view content = detail::trim(line);
-    if (content.empty() || content.front() == '#') continue;
-    if (!header) {
-      if (content != kHistoryHeader)
-        throw FileError(path, number, std::string("expected the header '") + kHistoryHeader + "'");
-      header = true;
-      continue;
-    }
-    detail::split_fields(line, fields);
-    if (fields.size() != 5) throw FileError(path, number, "expected 5 fields");
-    CheckHistoryRow row;
-    row.time = fields[0];
-    row.verdict = fields[1];
-    const std::optional<double> change = detail::parse_finite_double(fields[2]);
-    const std::optional<int> monitors = detail::parse_int(fields[3]);
-    if (!change || *change < 0.0)
-      throw FileError(path, number, "change_rms_mm is not a number >= 0");
-    if (!monitors || *monitors < 1) throw FileError(path, number, "monitors is not a count >= 1");
-    if (row.verdict != "valid" && row.verdict != "rigid change" && row.verdict != "outlier" &&
-        row.verdict != "smooth change") {
-      throw FileError(path, number, "unknown verdict '" + row.verdict + "'");
-    }
-    row.change_rms_mm = *change;
-    row.monitors = *monitors;
-    row.source = fields[4];
-    rows.push_back(std::move(row));
-  }
-  if (!header) throw FileError(path, 0, "empty history (no header line)");
-  return rows;
-}
-
-void append_check_history(const std::string& path, const std::string& time,
-                          const std::string& source, const CheckResult& result) {
-  std::string text;
-  if (std::filesystem::exists(path)) {
-    read_check_history(path);  // refuse to append to something that is not a history
-    text = read_input_file(path);
-    if (!text.empty() && text.back() != '\n') text += '\n';
-  } else {
-    text = std::string(kHistoryHeader) + "\n";
-  }
-  for (const std::string& field : {time, source}) {
-    if (field.find_first_of(",\n\r") != std::string::npos)
-      throw FileError(path, 0, "cannot record '" + field + "': it holds a comma or a line break");
-  }
-  text += time + "," + to_string(result.statistics.verdict) + "," +
-          fmt::format("{:.4f}", units::m_to_mm(result.statistics.change_rms_m)) + "," +
-          std::to_string(result.points.size()) + "," + source + "\n";
-  write_file_atomically(path, text);
-}
-
-std::string utc_now() {
-  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::time(nullptr)));
 }
 
 }  // namespace vrreg::io

@@ -130,6 +130,11 @@ std::array<double, 3> parse_robot_m(const std::vector<std::string_view>& fields,
                           printable(fields[column]) + "'");
     }
     out[axis] = columns.length_in_mm ? units::mm_to_m(*v) : *v;
+    if (const std::string why =
+            coordinate_out_of_range(out[axis], columns.names[column], printable(fields[column]));
+        !why.empty()) {
+      throw FileError(source, line, why);
+    }
   }
   return out;
 }

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "guard_json.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
@@ -35,14 +36,14 @@ nlohmann::json cross_validation_json(const CrossValidation& cv) {
   j["folds"] = cv.folds;
   j["seed"] = cv.seed;
   j["chosen"] = to_string(cv.chosen);
-  j["n_common"] = cv.n_common;
+  j["n_ranked"] = cv.n_ranked;
   nlohmann::json rows = nlohmann::json::array();
   for (const CrossValidationRow& row : cv.rows) {
     nlohmann::json r;
     r["method"] = to_string(row.method);
     r["applicable"] = row.applicable;
     if (row.applicable) {
-      r["rms_common_mm"] = units::m_to_mm(row.rms_common_m);
+      r["rms_ranked_mm"] = units::m_to_mm(row.rms_ranked_m);
       r["rms_mm"] = units::m_to_mm(row.rms_m);
       r["rms_axis_mm"] = json_mm3(row.rms_axis_m);
       r["n_predicted"] = row.n_predicted;
@@ -158,6 +159,9 @@ nlohmann::json register_json(const RegisterResult& result) {
     j["cross_validation"] = cross_validation_json(*result.cross_validation);
     j["interpolation"] = to_string(model.interpolation.method);
   }
+  if (model.corrector && model.corrector->guard()) {
+    j["guard"] = detail::guard_result_json(*model.corrector->guard());
+  }
   if (model.orientation_corrector) j["orientation"] = orientation_field_json(*model.orientation_corrector);
   add_strategy_json(model, result.relabelled, j);
   return j;
@@ -217,6 +221,7 @@ nlohmann::json evaluate_json(const EvaluateResult& result) {
   j["unc_max_tre_mm"] = corrected_mm(s.unc_max_tre_m);
   j["cor_max_tre_mm"] = corrected_mm(s.cor_max_tre_m);
   add_predicted_sd_json(c, result.calibration, j);
+  if (c.guard) j["guard"] = detail::guard_result_json(*c.guard);
   if (result.orientation) {  // rigid-body markers only: a sphere's JSON stays as it was
     const OrientationEvaluation& o = *result.orientation;
     nlohmann::json angle;
@@ -256,6 +261,7 @@ nlohmann::json correct_json(const CorrectResult& result) {
   j["interpolation"] = to_string(c.method_used);
   j["layout"] = c.layout;
   add_predicted_sd_json(c, std::nullopt, j);
+  if (c.guard) j["guard"] = detail::guard_result_json(*c.guard);
   if (result.cross_validation)
     j["cross_validation"] = cross_validation_json(*result.cross_validation);
   if (result.orientation) j["orientation"] = orientation_correction_json(*result.orientation);

@@ -26,7 +26,7 @@ std::optional<JointVector> shift_towards(const SerialChain& chain, const JointRe
     const JointLimits& l = chain.limit(i);
     const double target = reference != nullptr ? (*reference)(i) : 0.0;
     double v = q_rad(i);
-    if (chain.row(i).prismatic()) {  // a slide has no turns to shift by
+    if (!chain.wraps(i)) {  // a slide (or a turn its rows do not repeat) has no turns to shift by
       if (!(v >= l.lower_rad && v <= l.upper_rad)) return std::nullopt;
     } else if (!detail::shift_joint(v, l, target)) {
       return std::nullopt;
@@ -43,7 +43,7 @@ const char* to_string(JointNorm norm) { return norm == JointNorm::kL2 ? "l2" : "
 JointKinds::JointKinds(const SerialChain& chain)
     : prismatic_(static_cast<std::size_t>(chain.n_joints())) {
   for (int i = 0; i < chain.n_joints(); ++i) {
-    prismatic_[static_cast<std::size_t>(i)] = chain.row(i).prismatic();
+    prismatic_[static_cast<std::size_t>(i)] = !chain.wraps(i);
   }
 }
 

@@ -39,8 +39,11 @@ struct JointErrorLayout {
 
 /// Everything a fitted model needs to evaluate itself.
 struct JointErrorModel::State {
-  explicit State(SerialChain chain) : nominal(std::move(chain)) {}
+  explicit State(const SerialChain& chain) : nominal(chain.uncoupled()), commanded(chain) {}
+  /// The physical joints, one variable per DH row: what every term below is a function of.
   SerialChain nominal;
+  /// The chain as commanded; its joint variables give nominal's rows (row_values).
+  SerialChain commanded;
   Eigen::Vector3d p_flange_marker_m = Eigen::Vector3d::Zero();
   JointErrorLayout layout;
   Eigen::VectorXd q_lo_rad;  ///< fitted range of each joint

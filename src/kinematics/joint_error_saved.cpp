@@ -33,6 +33,7 @@ JointErrorModelParameters JointErrorModel::saved() const {
 
 JointErrorModel JointErrorModel::restore(const SerialChain& nominal,
                                          const JointErrorModelParameters& p) {
+  if (nominal.coupled()) return restore(nominal.uncoupled(), p).as_commanded_by(nominal);
   const int n = nominal.n_joints();
   VRREG_THROW_UNLESS(static_cast<int>(p.joint_degrees.size()) == n &&
                          p.q_lo_rad.size() == n && p.q_hi_rad.size() == n,

@@ -50,7 +50,8 @@ struct Limits {
 Limits search_limits(const SerialChain& chain, bool apply) {
   Limits l{JointVector(chain.n_joints()), JointVector(chain.n_joints())};
   for (int i = 0; i < chain.n_joints(); ++i) {
-    const bool keep = apply || chain.row(i).prismatic();
+    // A slide, or a turn whose rows do not come back after a full turn, keeps its limits always.
+    const bool keep = apply || !chain.wraps(i);
     l.lower(i) = keep ? chain.limit(i).lower_rad : -std::numeric_limits<double>::infinity();
     l.upper(i) = keep ? chain.limit(i).upper_rad : std::numeric_limits<double>::infinity();
   }
@@ -153,9 +154,12 @@ void NumericIkOptions::validate() const {
       "numeric IK: rotation_tolerance_rad must be > 0, got " << rotation_tolerance_rad);
 }
 
-std::uint16_t branch_joints(const SerialChain& chain) {
+namespace {
+
+// Bit k set: DH row k + 1 is a branch joint.
+std::uint16_t branch_rows(const SerialChain& chain) {
   std::uint16_t mask = 0;
-  for (int k = 1; k + 1 < chain.n_joints(); ++k) {
+  for (int k = 1; k + 1 < chain.n_rows(); ++k) {
     const DhRow& before = chain.row(k - 1);
     const DhRow& row = chain.row(k);
     if (row.prismatic() || before.prismatic()) continue;
@@ -167,14 +171,38 @@ std::uint16_t branch_joints(const SerialChain& chain) {
   return mask;
 }
 
+// The joint variable DH row `k` follows (itself on an uncoupled chain).
+int variable_of_row(const SerialChain& chain, int k) {
+  return chain.coupled() ? chain.couplings().rows[static_cast<std::size_t>(k)].variable : k;
+}
+
+}  // namespace
+
+std::uint16_t branch_joints(const SerialChain& chain) {
+  const std::uint16_t rows = branch_rows(chain);
+  std::uint16_t mask = 0;
+  for (int k = 0; k < chain.n_rows(); ++k) {
+    if ((rows >> k & 1) != 0)
+      mask = static_cast<std::uint16_t>(mask | 1u << variable_of_row(chain, k));
+  }
+  return mask;
+}
+
 ConfigurationLabel generic_configuration(const SerialChain& chain, const JointRef& q_rad) {
   chain.check_joints(q_rad, "configuration");
-  const std::uint16_t mask = branch_joints(chain);
+  const JointVector q_row = chain.row_values(q_rad);
+  const std::uint16_t rows = branch_rows(chain);
+  // The sign of each branch row's sin(theta), on the bit of the variable it follows (the first
+  // such row's where several rows follow one variable).
+  std::uint16_t mask = 0;
   std::uint16_t negative = 0;
-  for (int k = 0; k < chain.n_joints(); ++k) {
-    if ((mask >> k & 1) == 0) continue;
-    if (std::sin(q_rad(k) + chain.row(k).theta_offset_rad) < 0.0) {
-      negative = static_cast<std::uint16_t>(negative | 1u << k);
+  for (int k = 0; k < chain.n_rows(); ++k) {
+    if ((rows >> k & 1) == 0) continue;
+    const auto bit = static_cast<std::uint16_t>(1u << variable_of_row(chain, k));
+    if ((mask & bit) != 0) continue;
+    mask = static_cast<std::uint16_t>(mask | bit);
+    if (std::sin(q_row(k) + chain.row(k).theta_offset_rad) < 0.0) {
+      negative = static_cast<std::uint16_t>(negative | bit);
     }
   }
   return ConfigurationLabel::generic(mask, negative);
@@ -207,7 +235,7 @@ IkResult numeric_inverse_kinematics(const SerialChain& chain, const Eigen::Isome
     }
     if (!options.apply_joint_limits) {
       for (int i = 0; i < chain.n_joints(); ++i) {
-        if (!chain.row(i).prismatic()) d.q(i) = wrap_angle(d.q(i));
+        if (chain.wraps(i)) d.q(i) = wrap_angle(d.q(i));
       }
     }
     IkSolution solution;

@@ -110,16 +110,134 @@ SerialChain::SerialChain(std::string name, std::vector<DhRow> rows, std::vector<
   family_ = detect_family(rows_);
 }
 
+SerialChain& SerialChain::keep_extras_of(const SerialChain& other) {
+  couplings_ = other.couplings_;
+  variable_limits_ = other.variable_limits_;
+  urdf_base_link_ = other.urdf_base_link_;
+  urdf_tip_link_ = other.urdf_tip_link_;
+  if (coupled()) family_ = ChainFamily::kGeneric;
+  return *this;
+}
+
 SerialChain SerialChain::with_tool(const Eigen::Isometry3d& T_flange_tcp) const {
-  return SerialChain(name_, rows_, limits_, T_base_dh0_, T_flange_tcp);
+  return SerialChain(name_, rows_, limits_, T_base_dh0_, T_flange_tcp).keep_extras_of(*this);
 }
 
 SerialChain SerialChain::with_base(const Eigen::Isometry3d& T_base_dh0) const {
-  return SerialChain(name_, rows_, limits_, T_base_dh0, T_flange_tcp_);
+  return SerialChain(name_, rows_, limits_, T_base_dh0, T_flange_tcp_).keep_extras_of(*this);
 }
 
 SerialChain SerialChain::with_name(std::string name) const {
-  return SerialChain(std::move(name), rows_, limits_, T_base_dh0_, T_flange_tcp_);
+  return SerialChain(std::move(name), rows_, limits_, T_base_dh0_, T_flange_tcp_)
+      .keep_extras_of(*this);
+}
+
+SerialChain SerialChain::with_urdf_links(std::string base_link, std::string tip_link) const {
+  SerialChain out = *this;
+  out.urdf_base_link_ = std::move(base_link);
+  out.urdf_tip_link_ = std::move(tip_link);
+  return out;
+}
+
+SerialChain SerialChain::uncoupled() const {
+  SerialChain out = *this;
+  out.couplings_ = {};
+  out.variable_limits_.clear();
+  out.family_ = detect_family(rows_);
+  return out;
+}
+
+SerialChain SerialChain::with_couplings(JointCouplings couplings) const {
+  const std::size_t n_variables = couplings.variables.size();
+  VRREG_THROW_UNLESS(couplings.rows.size() == rows_.size(),
+                     "robot '" << name_ << "': " << couplings.rows.size() << " couplings for "
+                               << rows_.size() << " DH rows");
+  VRREG_THROW_UNLESS(n_variables >= 1 && n_variables <= rows_.size(),
+                     "robot '" << name_ << "': " << n_variables << " joint variables for "
+                               << rows_.size() << " DH rows");
+  std::vector<JointLimits> range(n_variables);
+  std::vector<bool> followed(n_variables, false);
+  for (std::size_t v = 0; v < n_variables; ++v) {
+    const JointVariable& var = couplings.variables[v];
+    const JointLimits& l = var.limits;
+    VRREG_THROW_UNLESS(
+        std::isfinite(l.lower_rad) && std::isfinite(l.upper_rad) && l.lower_rad < l.upper_rad,
+        "robot '" << name_ << "': joint '" << var.name
+                  << "' limits must be finite with lower < upper, got [" << l.lower_rad << ", "
+                  << l.upper_rad << "]");
+    range[v] = l;
+  }
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const JointCoupling& c = couplings.rows[r];
+    VRREG_THROW_UNLESS(c.variable >= 0 && static_cast<std::size_t>(c.variable) < n_variables,
+                       "robot '" << name_ << "': DH row " << r + 1 << " follows joint variable "
+                                 << c.variable + 1 << " of " << n_variables);
+    const auto v = static_cast<std::size_t>(c.variable);
+    const std::string& source = couplings.variables[v].name;
+    VRREG_THROW_UNLESS(
+        std::isfinite(c.multiplier) && c.multiplier != 0.0 && std::isfinite(c.offset),
+        "robot '" << name_ << "': DH row " << r + 1 << " follows joint '" << source
+                  << "' with multiplier " << c.multiplier << " and offset " << c.offset
+                  << " (a finite, non-zero multiplier and a finite "
+                  << "offset)");
+    followed[v] = true;
+    // The row's own limits as a range of the variable: q = (q_row - offset) / multiplier.
+    double lo = (limits_[r].lower_rad - c.offset) / c.multiplier;
+    double hi = (limits_[r].upper_rad - c.offset) / c.multiplier;
+    if (lo > hi) std::swap(lo, hi);
+    range[v].lower_rad = std::max(range[v].lower_rad, lo);
+    range[v].upper_rad = std::min(range[v].upper_rad, hi);
+  }
+  for (std::size_t v = 0; v < n_variables; ++v) {
+    const std::string& source = couplings.variables[v].name;
+    VRREG_THROW_UNLESS(followed[v],
+                       "robot '" << name_ << "': no DH row follows joint '" << source << "'");
+    VRREG_THROW_UNLESS(range[v].lower_rad < range[v].upper_rad,
+                       "robot '" << name_ << "': the limits of joint '" << source
+                                 << "' and of the joints that follow it leave no common range");
+  }
+  SerialChain out = *this;
+  out.couplings_ = std::move(couplings);
+  out.variable_limits_ = std::move(range);
+  out.family_ = ChainFamily::kGeneric;  // the analytic IKs solve for one variable per row
+  return out;
+}
+
+bool SerialChain::prismatic(int i) const {
+  return coupled() ? couplings_.variables[static_cast<std::size_t>(i)].type == JointType::kPrismatic
+                   : row(i).prismatic();
+}
+
+bool SerialChain::wraps(int i) const {
+  if (prismatic(i)) return false;
+  if (!coupled()) return true;
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const JointCoupling& c = couplings_.rows[r];
+    if (c.variable != i) continue;
+    if (rows_[r].prismatic() || c.multiplier != std::round(c.multiplier)) return false;
+  }
+  return true;
+}
+
+JointVector SerialChain::row_values(const JointRef& q) const {
+  check_joints(q, "joint values");
+  if (!coupled()) return q;
+  JointVector out(n_rows());
+  for (int r = 0; r < n_rows(); ++r) {
+    const JointCoupling& c = couplings_.rows[static_cast<std::size_t>(r)];
+    out(r) = c.multiplier * q(c.variable) + c.offset;
+  }
+  return out;
+}
+
+Eigen::MatrixXd SerialChain::coupling_matrix() const {
+  if (!coupled()) return Eigen::MatrixXd::Identity(n_rows(), n_rows());
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n_rows(), n_joints());
+  for (int r = 0; r < n_rows(); ++r) {
+    const JointCoupling& c = couplings_.rows[static_cast<std::size_t>(r)];
+    m(r, c.variable) = c.multiplier;
+  }
+  return m;
 }
 
 Eigen::Isometry3d SerialChain::dh0_flange_from_base_tcp(const Eigen::Isometry3d& T_base_tcp) const {

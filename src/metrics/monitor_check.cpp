@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/metrics/monitor_check.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <iomanip>
 #include <optional>
@@ -12,53 +13,70 @@
 namespace vrreg {
 namespace {
 
-// Weighted least squares of d_i = omega x p_i + t = [-[p_i]x, I] (omega, t), p about the
-// weighted centroid (so omega and t decouple for an isotropic sd).
+// Weighted least squares of d_i = omega x p_i + t, p about the weighted centroid: with one sd per
+// point the translation is the weighted mean and the rotation decouples from it.
 struct RigidFit {
   RigidChange change;
   double residual_chi2 = 0.0;
-  bool ok = false;
 };
 
-Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& v) {
+Eigen::Matrix3d skew_of(const Eigen::Vector3d& v) {
   Eigen::Matrix3d m;
   m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
   return m;
 }
 
-RigidFit fit_rigid(const ConstPoints3Ref& p, const Points3& d, const Eigen::VectorXd& sd,
-                   const std::vector<bool>& use) {
+// Below this fraction of the points' weighted squared size (their distance from the origin
+// included) a rotation axis is not seen: points on a line, one point.
+constexpr double kUnseenRotation = 1e-9;
+
+RigidFit fit_rigid(const ConstPoints3Ref& baseline, const Points3& d, const Eigen::VectorXd& sd) {
+  const Eigen::VectorXd w = sd.array().square().inverse();
+  const double total = w.sum();
+  const Eigen::Vector3d centroid = (baseline * w) / total;
+  const Eigen::Vector3d t_centroid = (d * w) / total;
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  for (Eigen::Index i = 0; i < baseline.cols(); ++i) {
+    const Eigen::Vector3d p = baseline.col(i) - centroid;
+    normal += w(i) * (p.squaredNorm() * Eigen::Matrix3d::Identity() - p * p.transpose());
+    rhs += w(i) * p.cross(d.col(i));
+  }
+  // Pseudo-inverse: an axis the points do not turn about (a line, one point) gets no rotation.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(normal);
+  // Against the points' own size (not the spread's, which rounding alone gives one point).
+  double size = 0.0;
+  for (Eigen::Index i = 0; i < baseline.cols(); ++i) size += w(i) * baseline.col(i).squaredNorm();
+  const int most = baseline.cols() == 1 ? 0 : baseline.cols() == 2 ? 2 : 3;
+  Eigen::Matrix3d inverse = Eigen::Matrix3d::Zero();
+  int rank = 0;
+  for (int k = 2; k >= 0 && rank < most; --k) {  // largest first
+    const double lambda = eigen.eigenvalues()(k);
+    if (lambda > kUnseenRotation * size) {
+      inverse += eigen.eigenvectors().col(k) * eigen.eigenvectors().col(k).transpose() / lambda;
+      ++rank;
+    }
+  }
   RigidFit fit;
-  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
-  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-  for (Eigen::Index i = 0; i < p.cols(); ++i) {
-    if (!use[static_cast<std::size_t>(i)]) continue;
-    Eigen::Matrix<double, 3, 6> a;
-    a.leftCols<3>() = -cross_matrix(p.col(i));
-    a.rightCols<3>() = Eigen::Matrix3d::Identity();
-    const double w = 1.0 / (sd(i) * sd(i));
-    normal += w * a.transpose() * a;
-    rhs += w * a.transpose() * d.col(i);
-  }
-  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(normal);
-  // Collinear points leave a rotation about their line unobservable.
-  const Eigen::JacobiSVD<Eigen::Matrix<double, 6, 6>> svd(normal);
-  if (svd.singularValues()(5) <= 1e-12 * svd.singularValues()(0)) return fit;
-  const Eigen::Matrix<double, 6, 1> x = ldlt.solve(rhs);
-  fit.change.rotation_rad = x.head<3>();
-  fit.change.translation_m = x.tail<3>();
-  fit.change.covariance = ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
+  RigidChange& c = fit.change;
+  c.rotation_rad = inverse * rhs;
+  c.rotation_rank = rank;
+  c.centroid_m = centroid;
+  c.translation_at_centroid_m = t_centroid;
+  c.covariance_at_centroid.topLeftCorner<3, 3>() = inverse;
+  c.covariance_at_centroid.bottomRightCorner<3, 3>() = Eigen::Matrix3d::Identity() / total;
+  // The origin's move: t0 = t_c - omega x c = t_c + [c]x omega; its covariance by the same map.
+  c.translation_m = t_centroid - c.rotation_rad.cross(centroid);
+  Eigen::Matrix<double, 6, 6> to_origin = Eigen::Matrix<double, 6, 6>::Identity();
+  to_origin.bottomLeftCorner<3, 3>() = skew_of(centroid);
+  c.covariance = to_origin * c.covariance_at_centroid * to_origin.transpose();
   double moved = 0.0;
-  int n = 0;
-  for (Eigen::Index i = 0; i < p.cols(); ++i) {
-    if (!use[static_cast<std::size_t>(i)]) continue;
-    const Eigen::Vector3d motion = x.head<3>().cross(p.col(i)) + x.tail<3>();
+  for (Eigen::Index i = 0; i < baseline.cols(); ++i) {
+    const Eigen::Vector3d motion = c.rotation_rad.cross(baseline.col(i) - centroid) + t_centroid;
     moved += motion.squaredNorm();
-    fit.residual_chi2 += (d.col(i) - motion).squaredNorm() / (sd(i) * sd(i));
-    ++n;
+    fit.residual_chi2 += (d.col(i) - motion).squaredNorm() * w(i);
   }
-  fit.change.displacement_rms_m = std::sqrt(moved / n);
-  fit.ok = true;
+  c.displacement_rms_m = std::sqrt(moved / static_cast<double>(baseline.cols()));
   return fit;
 }
 
@@ -68,6 +86,26 @@ double chi2_of(const Points3& d, const Eigen::VectorXd& sd, const std::vector<bo
     if (use[static_cast<std::size_t>(i)]) chi2 += d.col(i).squaredNorm() / (sd(i) * sd(i));
   }
   return chi2;
+}
+
+std::string mm_text(double m) {
+  std::ostringstream t;
+  t << std::fixed << std::setprecision(3) << 1e3 * m;
+  return t.str();
+}
+
+// What a rigid change of these points says, and does not.
+std::string rigid_words(const MonitorCheck& out, int n) {
+  const RigidChange& r = *out.rigid;
+  if (n == 1) {
+    return "the monitor point moved by " + mm_text(r.displacement_rms_m) +
+           " mm: consistent with a move of the sensor (a bump); one point cannot tell it from a "
+           "drift of the robot or from the point itself moving, nor see a turn of the sensor";
+  }
+  std::string text = "the sensor moved rigidly: " + mm_text(r.displacement_rms_m) +
+                     " mm RMS at the monitor points";
+  if (r.rotation_rank < 3) text += " (a turn about the line through them is not seen)";
+  return text;
 }
 
 }  // namespace
@@ -82,6 +120,8 @@ const char* to_string(MonitorVerdict verdict) {
       return "outlier";
     case MonitorVerdict::kSmoothChange:
       return "smooth change";
+    case MonitorVerdict::kNoisier:
+      return "noisier today";
   }
   return "unknown";
 }
@@ -93,6 +133,39 @@ void MonitorCheckOptions::validate() const {
   VRREG_THROW_UNLESS(
       std::isfinite(variance_dof) && variance_dof >= 0.0,
       "monitor check: the variance's degrees of freedom must be >= 0, got " << variance_dof);
+}
+
+std::vector<std::string> monitor_blind_spots(const ConstPoints3Ref& points_m) {
+  VRREG_THROW_UNLESS(points_m.allFinite(), "monitor points: a position is not finite");
+  const Eigen::Index n = points_m.cols();
+  std::vector<std::string> out;
+  if (n == 1) {
+    out.emplace_back(
+        "one point: a bump, a drift of the robot and the point itself moving look the same, and "
+        "a turn of the sensor is not seen");
+    return out;
+  }
+  if (n == 0) return out;
+  const Points3 centred = points_m.colwise() - points_m.rowwise().mean();
+  const Eigen::Vector3d s =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(centred * centred.transpose())
+          .eigenvalues()
+          .cwiseMax(0.0)
+          .cwiseSqrt();  // ascending: off-plane, off-line, along
+  // A spread below 5 % of the largest counts as none: the test then has no power there.
+  const bool line = s(1) < 0.05 * s(2);
+  const bool plane = s(0) < 0.05 * s(2);
+  if (line) {
+    out.emplace_back(
+        "points on a line: a turn of the sensor about it is not seen, and a drift that moves "
+        "them alike looks like a bump");
+  } else if (plane) {
+    out.emplace_back(
+        "points on a plane: a change that grows along its normal from zero on it (a tilt or "
+        "stretch of the robot out of that plane) moves none of them; 4 monitor points off one "
+        "plane see it (vrreg plan --monitor)");
+  }
+  return out;
 }
 
 MonitorCheck check_monitors(const ConstPoints3Ref& baseline_sensor_m,
@@ -120,54 +193,17 @@ MonitorCheck check_monitors(const ConstPoints3Ref& baseline_sensor_m,
   out.dof = static_cast<int>(3 * n);
   out.chi2 = chi2_of(d, sd, all);
   out.change_rms_m = std::sqrt(d.colwise().squaredNorm().mean());
-  // Centred about the sd-weighted centroid: rotation and translation then decouple.
-  const Eigen::VectorXd w = sd.array().square().inverse();
-  const Eigen::Vector3d centroid = (baseline_sensor_m * w) / w.sum();
-  const Points3 p = baseline_sensor_m.colwise() - centroid;
-  std::optional<RigidFit> fit;
-  if (n >= 3) {
-    RigidFit f = fit_rigid(p, d, sd, all);
-    if (f.ok) fit = f;
-  }
+  out.blind_spots = monitor_blind_spots(baseline_sensor_m);
+  RigidFit fit = fit_rigid(baseline_sensor_m, d, sd);
+  out.rigid_dof = 3 + fit.change.rotation_rank;
+  out.residual_dof = out.dof - out.rigid_dof;
+  out.rigid_chi2 = out.chi2 - fit.residual_chi2;
+  out.rigid_residual_chi2 = fit.residual_chi2;
   std::ostringstream why;
-  why << std::fixed << std::setprecision(2);  // chi-square values; lengths below in mm, 3 places
-  const auto mm = [](double m) {
-    std::ostringstream t;
-    t << std::fixed << std::setprecision(3) << 1e3 * m;
-    return t.str();
-  };
-  bool rigid_alarm = false;
+  why << std::fixed << std::setprecision(2);  // chi-square values; lengths in mm, 3 places
   bool rest_alarm = false;
-  if (fit) {
-    const int rest_dof = out.dof - 6;
-    const double beta = split_rate(alpha, 6, rest_dof, nu);
-    out.rigid_chi2 = out.chi2 - fit->residual_chi2;
-    out.rigid_threshold = bound(beta, 6);
-    out.residual_threshold = bound(beta, rest_dof);
-    out.rigid_residual_chi2 = fit->residual_chi2;
-    rigid_alarm = out.rigid_chi2 > out.rigid_threshold;
-    rest_alarm = fit->residual_chi2 > out.residual_threshold;
-    // Back to the sensor frame's origin: t' = t - omega x centroid.
-    fit->change.translation_m -= fit->change.rotation_rad.cross(centroid);
-    out.rigid = fit->change;
-    if (!rigid_alarm && !rest_alarm) {
-      why << "unchanged: rigid part chi2 " << out.rigid_chi2 << " <= " << out.rigid_threshold
-          << " (6 dof), the rest " << fit->residual_chi2 << " <= " << out.residual_threshold << " ("
-          << rest_dof << " dof); false-alarm rate " << alpha;
-      out.rigid.reset();
-      out.message = why.str();
-      return out;
-    }
-    if (!rest_alarm) {
-      out.verdict = MonitorVerdict::kRigidChange;
-      why << "the sensor moved rigidly: " << mm(fit->change.displacement_rms_m)
-          << " mm RMS at the monitor points (rigid part chi2 " << out.rigid_chi2 << " > "
-          << out.rigid_threshold << ", the rest " << fit->residual_chi2
-          << " <= " << out.residual_threshold << ")";
-      out.message = why.str();
-      return out;
-    }
-  } else {
+  if (out.residual_dof == 0) {
+    // One point: the whole change is its translation.
     out.threshold = bound(alpha, out.dof);
     if (out.chi2 <= out.threshold) {
       why << "unchanged: chi2 " << out.chi2 << " <= " << out.threshold << " (" << out.dof
@@ -175,27 +211,53 @@ MonitorCheck check_monitors(const ConstPoints3Ref& baseline_sensor_m,
       out.message = why.str();
       return out;
     }
+  } else {
+    const double beta = split_rate(alpha, out.rigid_dof, out.residual_dof, nu);
+    out.rigid_threshold = bound(beta, out.rigid_dof);
+    out.residual_threshold = bound(beta, out.residual_dof);
+    const bool rigid_alarm = out.rigid_chi2 > out.rigid_threshold;
+    rest_alarm = fit.residual_chi2 > out.residual_threshold;
+    if (!rigid_alarm && !rest_alarm) {
+      why << "unchanged: rigid part chi2 " << out.rigid_chi2 << " <= " << out.rigid_threshold
+          << " (" << out.rigid_dof << " dof), the rest " << fit.residual_chi2
+          << " <= " << out.residual_threshold << " (" << out.residual_dof
+          << " dof); false-alarm rate " << alpha;
+      out.message = why.str();
+      return out;
+    }
+  }
+  out.rigid = fit.change;
+  if (!rest_alarm) {
+    out.verdict = MonitorVerdict::kRigidChange;
+    why << rigid_words(out, static_cast<int>(n));
+    if (out.residual_dof > 0) {
+      why << " (rigid part chi2 " << out.rigid_chi2 << " > " << out.rigid_threshold << ", the rest "
+          << fit.residual_chi2 << " <= " << out.residual_threshold << ")";
+    } else {
+      why << " (chi2 " << out.chi2 << " > " << out.threshold << ", " << out.dof << " dof)";
+    }
+    out.message = why.str();
+    return out;
   }
   // One point off, the others unchanged: the largest standardised difference, the rest tested
   // again (Sidak over the N candidates keeps the rate).
   Eigen::Index worst = 0;
   const Eigen::VectorXd z2 = d.colwise().squaredNorm().transpose().cwiseQuotient(sd.cwiseAbs2());
   z2.maxCoeff(&worst);
-  if (n >= 2) {
-    std::vector<bool> rest = all;
-    rest[static_cast<std::size_t>(worst)] = false;
-    const double per_candidate = -std::expm1(std::log1p(-alpha) / static_cast<double>(n));
-    if (chi2_of(d, sd, rest) <= bound(per_candidate, out.dof - 3)) {
-      out.verdict = MonitorVerdict::kOutlier;
-      out.outlier = worst;
-      why << "monitor point " << worst + 1 << " moved by " << mm(d.col(worst).norm())
-          << " mm, the others are unchanged";
-      out.message = why.str();
-      return out;
-    }
+  std::vector<bool> rest = all;
+  rest[static_cast<std::size_t>(worst)] = false;
+  const double per_candidate = -std::expm1(std::log1p(-alpha) / static_cast<double>(n));
+  if (chi2_of(d, sd, rest) <= bound(per_candidate, out.dof - 3)) {
+    out.verdict = MonitorVerdict::kOutlier;
+    out.outlier = worst;
+    why << "monitor point " << worst + 1 << " moved by " << mm_text(d.col(worst).norm())
+        << " mm, the others are unchanged";
+    if (n == 2) why << " (or the robot drifted near it: two points cannot tell)";
+    out.message = why.str();
+    return out;
   }
   out.verdict = MonitorVerdict::kSmoothChange;
-  why << "changed, not rigidly: " << mm(out.change_rms_m)
+  why << "changed, not rigidly: " << mm_text(out.change_rms_m)
       << " mm RMS at the monitor points (the robot drifted?)";
   out.message = why.str();
   return out;

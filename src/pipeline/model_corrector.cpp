@@ -77,14 +77,13 @@ namespace {
 // The same arm as the model's: the same geometry, limits, base and tool, to the bit (the robot
 // a model was registered with, named again on the command line).
 bool same_robot(const kinematics::SerialChain& a, const kinematics::SerialChain& b) {
-  if (a.n_joints() != b.n_joints()) return false;
-  for (int i = 0; i < a.n_joints(); ++i) {
+  if (a.n_rows() != b.n_rows() || a.couplings() != b.couplings()) return false;
+  for (int i = 0; i < a.n_rows(); ++i) {
     const kinematics::DhRow& r = a.row(i);
     const kinematics::DhRow& s = b.row(i);
     if (r.a_m != s.a_m || r.alpha_rad != s.alpha_rad || r.d_m != s.d_m ||
         r.theta_offset_rad != s.theta_offset_rad || r.type != s.type ||
-        a.limit(i).lower_rad != b.limit(i).lower_rad ||
-        a.limit(i).upper_rad != b.limit(i).upper_rad) {
+        a.limits()[static_cast<std::size_t>(i)] != b.limits()[static_cast<std::size_t>(i)]) {
       return false;
     }
   }

@@ -18,13 +18,13 @@ struct Visits {
   std::size_t first_line = 0;
 };
 
-// Mean of the visits; adds their scatter about it to `ss` and its dof to `dof`.
-Eigen::Vector3d mean_of(const Visits& v, double& ss, double& dof) {
+// Mean of the visits; adds their scatter about it to `scatter`.
+Eigen::Vector3d mean_of(const Visits& v, VisitScatter& scatter) {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& x : v.means_m) mean += x;
   mean /= static_cast<double>(v.means_m.size());
-  for (const Eigen::Vector3d& x : v.means_m) ss += (x - mean).squaredNorm();
-  dof += 3.0 * static_cast<double>(v.means_m.size() - 1);
+  for (const Eigen::Vector3d& x : v.means_m) scatter.sum_m2 += (x - mean).squaredNorm();
+  scatter.dof += 3.0 * static_cast<double>(v.means_m.size() - 1);
   return mean;
 }
 
@@ -40,11 +40,10 @@ MonitorPairs monitor_pairs(const RegistrationModel& model, const MeasurementSet&
     it->second.robot_m = m.robot_m;
     it->second.means_m.push_back(m.sensor_m);
   }
-  if (then.empty()) {
-    fail(today,
-         "the model has no monitor points: register with monitor rows (role monitor; "
-         "`vrreg plan --monitor N` chooses them)");
-  }
+  // About the model, not today's file: InputError, which the caller names the model by.
+  VRREG_THROW_UNLESS(!then.empty(),
+                     "the model has no monitor points: register with monitor rows (role monitor; "
+                     "`vrreg plan --monitor` chooses them)");
   const std::vector<std::size_t> rows = today.select(Role::kMonitor);
   if (rows.empty()) fail(today, "no monitor rows (role monitor)");
   const Points3 sensor = model.registered_sensor_points(today.sensor_points(rows));
@@ -72,8 +71,8 @@ MonitorPairs monitor_pairs(const RegistrationModel& model, const MeasurementSet&
     p.config = key.second;
     const Visits& before = then.at(key);
     p.robot_m = before.robot_m;
-    p.baseline_m = mean_of(before, out.scatter_m2, out.scatter_dof);
-    p.today_m = mean_of(it->second, out.scatter_m2, out.scatter_dof);
+    p.baseline_m = mean_of(before, out.then);
+    p.today_m = mean_of(it->second, out.today);
     p.today_as_read_m = model.T_registered_sensor
                             ? model.T_registered_sensor->inverse().apply(p.today_m)
                             : p.today_m;

@@ -23,16 +23,24 @@ struct MonitorPair {
   int today_visits = 0;
 };
 
-/// The pairs in the model's order, with the visits' pooled scatter (both times).
-struct MonitorPairs {
-  std::vector<MonitorPair> points;
-  double scatter_m2 = 0.0;   ///< sum over points and times of |visit - its mean|^2
-  double scatter_dof = 0.0;  ///< 3 (visits - 1) summed over points and times
-  int model_points = 0;      ///< distinct monitor points the model has
+/// The visits' scatter about their means at one time, over the points read.
+struct VisitScatter {
+  double sum_m2 = 0.0;  ///< sum over points of |visit - its mean|^2
+  double dof = 0.0;     ///< 3 (visits - 1) summed over points
 };
 
-/// Pairs today's monitor rows with the model's; throws (naming today's file and line) when the
-/// model has none, today has none, or today has one the model does not.
+/// The pairs in the model's order, with the visits' scatter then and today, apart (today may be
+/// noisier than the registration).
+struct MonitorPairs {
+  std::vector<MonitorPair> points;
+  VisitScatter then{};   ///< the registration's visits of the points read today
+  VisitScatter today{};  ///< today's
+  int model_points = 0;  ///< distinct monitor points the model has
+};
+
+/// Pairs today's monitor rows with the model's; throws InputError (the model's: the caller names
+/// its file) when the model has none, and FileError naming today's file and line when today has
+/// none or one the model does not have.
 MonitorPairs monitor_pairs(const RegistrationModel& model, const MeasurementSet& today);
 
 }  // namespace vrreg::pipeline_detail

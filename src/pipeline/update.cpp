@@ -193,6 +193,26 @@ UpdateResult drift(const RegistrationModel& model, const MeasurementSet& today,
   return out;
 }
 
+// An update on a day the check found nothing fits noise into the model.
+void refuse_if_unchanged(const MeasurementSet& today, const std::optional<CheckResult>& check,
+                         const std::optional<MonitorVerdict>& last_verdict) {
+  const auto unchanged = [](MonitorVerdict v) {
+    return v == MonitorVerdict::kValid || v == MonitorVerdict::kNoisier;
+  };
+  const std::string anyway =
+      ": an update would fit noise into the model; give `even_if_unchanged` "
+      "(vrreg update --even-if-unchanged) to update anyway";
+  if (check && unchanged(check->statistics.verdict)) {
+    pipeline_detail::fail(today, "today's monitor readings show no change (" +
+                                     std::string(to_string(check->statistics.verdict)) + ": " +
+                                     check->statistics.message + ")" + anyway);
+  }
+  if (!check && last_verdict && unchanged(*last_verdict)) {
+    pipeline_detail::fail(today, "the last check of this model found no change (" +
+                                     std::string(to_string(*last_verdict)) + ")" + anyway);
+  }
+}
+
 }  // namespace
 
 const char* to_string(CellChange change) { return change == CellChange::kBump ? "bump" : "drift"; }
@@ -200,8 +220,20 @@ const char* to_string(CellChange change) { return change == CellChange::kBump ? 
 UpdateResult update_model(const RegistrationModel& model, const MeasurementSet& today,
                           const UpdateOptions& options) {
   model.validate();
-  return options.change == CellChange::kBump ? bump(model, today, options)
-                                             : drift(model, today, options);
+  std::optional<CheckResult> check;
+  if (!today.select(Role::kMonitor).empty() && !model.monitors.empty()) {
+    try {
+      check = check_cell(model, today, options.check);
+    } catch (const InputError&) {
+      // Not checkable (e.g. one visit each, then and today): the history's verdict decides, and
+      // a file the update cannot use either fails below with its own message.
+    }
+  }
+  if (!options.even_if_unchanged) refuse_if_unchanged(today, check, options.last_verdict);
+  UpdateResult out = options.change == CellChange::kBump ? bump(model, today, options)
+                                                         : drift(model, today, options);
+  out.today_check = std::move(check);
+  return out;
 }
 
 }  // namespace vrreg

@@ -13,6 +13,7 @@ namespace {
 const char* colour_of(const std::string& verdict) {
   if (verdict == "valid") return charts::kCorrected;
   if (verdict == "outlier") return charts::kPaper;
+  if (verdict == "noisier today") return charts::kNeutral;  // nothing found, the test was weaker
   return charts::kFailed;  // rigid or smooth change: the model no longer holds
 }
 
@@ -30,7 +31,8 @@ ReportSection monitor_history_section(const std::vector<io::CheckHistoryRow>& hi
       "), " + std::to_string(changed) +
       " of them not valid. A rigid change means the sensor moved (vrreg update --change bump), a "
       "smooth change that the robot drifted (read the fiducials the check names again, then "
-      "vrreg update --change drift).");
+      "vrreg update --change drift); noisier today that nothing was found but the readings "
+      "scattered more than at registration (check again).");
   ReportFigure f;
   f.title = "Change at the monitor points per check";
   f.wide = true;
@@ -55,7 +57,7 @@ ReportSection monitor_history_section(const std::vector<io::CheckHistoryRow>& hi
   f.layout = charts::xy_layout("check time", "RMS change at the monitor points [mm]");
   f.caption =
       "One point per check; blue: valid, red: the sensor moved or the robot drifted, "
-      "orange: one monitor point moved.";
+      "orange: one monitor point moved, grey: noisier today.";
   s.figures.push_back(std::move(f));
   ReportTable t;
   t.title = "Checks that were not valid";

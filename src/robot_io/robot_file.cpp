@@ -211,18 +211,35 @@ std::string string_value(const RobotReader& r, const json& root, const std::stri
   return root.at(key).get<std::string>();
 }
 
+// The refusal of links given for a robot that is `what`, not a URDF.
+std::string not_a_urdf(const UrdfChainOptions& links, const std::string& what) {
+  const std::string link = !links.tip_link.empty() ? "tip link '" + links.tip_link + "'"
+                                                   : "base link '" + links.base_link + "'";
+  return link + " given, but the robot is " + what +
+         ": tip and base links name links of a URDF (a .urdf file, or a robot file with \"urdf\")";
+}
+
 // A robot file that names a URDF: its chain from base_link to tip_link, with the file's tool
 // (in the tip link's frame) and base (the base link's frame in the robot frame) on top.
 kinematics::SerialChain urdf_chain(const RobotReader& r, const json& root,
-                                   const std::string& source) {
+                                   const std::string& source, const UrdfChainOptions& given) {
   for (const char* key : {"dh", "joint_limits_rad", "joint_limits_deg"}) {
     if (root.contains(key)) r.fail(key, "give either \"urdf\" or a DH table, not both");
   }
   std::filesystem::path urdf = string_value(r, root, "urdf");
   if (urdf.is_relative()) urdf = std::filesystem::path(source).parent_path() / urdf;
-  UrdfChainOptions options;
-  if (root.contains("base_link")) options.base_link = string_value(r, root, "base_link");
-  if (root.contains("tip_link")) options.tip_link = string_value(r, root, "tip_link");
+  UrdfChainOptions options = given;
+  // A link given besides the file's must be the file's: two names for one robot is a mistake.
+  const auto link = [&](const char* key, std::string& value) {
+    if (!root.contains(key)) return;
+    const std::string in_file = string_value(r, root, key);
+    if (!value.empty() && value != in_file && !given.defaults_only) {
+      r.fail(key, "'" + in_file + "' here, '" + value + "' given besides: name one " + key);
+    }
+    value = in_file;
+  };
+  link("base_link", options.base_link);
+  link("tip_link", options.tip_link);
   kinematics::SerialChain chain = read_urdf_robot(urdf.string(), options);
   if (root.contains("tool")) {
     chain = chain.with_tool(chain.T_flange_tcp() * r.transform(root.at("tool"), "tool"));
@@ -233,7 +250,8 @@ kinematics::SerialChain urdf_chain(const RobotReader& r, const json& root,
   return chain;
 }
 
-kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std::string& source) {
+kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std::string& source,
+                                    const UrdfChainOptions& links) {
   const RobotReader r(doc, source);
   const json& root = doc.root;
   if (root.is_null()) r.fail("", "empty robot file (expected a DH table under \"dh\")");
@@ -242,13 +260,16 @@ kinematics::SerialChain build_chain(const detail::RobotDocument& doc, const std:
                {"format", "name", "family", "dh", "joint_limits_rad", "joint_limits_deg", "tool",
                 "base", "urdf", "base_link", "tip_link"});
   if (root.contains("urdf")) {
-    kinematics::SerialChain chain = urdf_chain(r, root, source);
+    kinematics::SerialChain chain = urdf_chain(r, root, source, links);
     if (root.contains("name")) chain = chain.with_name(string_value(r, root, "name"));
     check_family(r, root, chain);
     return chain;
   }
   for (const char* key : {"base_link", "tip_link"}) {
     if (root.contains(key)) r.fail(key, "goes with \"urdf\"");
+  }
+  if ((!links.base_link.empty() || !links.tip_link.empty()) && !links.defaults_only) {
+    r.fail("", not_a_urdf(links, "a DH table"));
   }
   if (root.contains("format") && root.at("format") != "vrreg-robot") {
     r.fail("format", "expected \"vrreg-robot\", got " + quote_value(root.at("format")));
@@ -295,7 +316,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }  // namespace
 
 kinematics::SerialChain parse_robot_file(const std::string& text, const std::string& source,
-                                         RobotFileSyntax syntax) {
+                                         RobotFileSyntax syntax, const UrdfChainOptions& links) {
   if (syntax == RobotFileSyntax::kAuto) {
     const std::size_t first = text.find_first_not_of(" \t\r\n");
     syntax = first != std::string::npos && text[first] == '{' ? RobotFileSyntax::kJson
@@ -307,25 +328,27 @@ kinematics::SerialChain parse_robot_file(const std::string& text, const std::str
   const detail::RobotDocument doc = syntax == RobotFileSyntax::kJson
                                         ? detail::parse_robot_json(text, source)
                                         : detail::parse_robot_yaml(text, source);
-  return build_chain(doc, source);
+  return build_chain(doc, source, links);
 }
 
-kinematics::SerialChain read_robot_file(const std::string& path) {
+kinematics::SerialChain read_robot_file(const std::string& path, const UrdfChainOptions& links) {
   const std::string text = read_input_file(path);
   std::string lower = path;
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const std::size_t first = text.find_first_not_of(" \t\r\n");
   if (ends_with(lower, ".urdf") || (first != std::string::npos && text[first] == '<')) {
-    return parse_urdf_robot(text, path);
+    return parse_urdf_robot(text, path, links);
   }
   RobotFileSyntax syntax = RobotFileSyntax::kAuto;
   if (ends_with(lower, ".json")) syntax = RobotFileSyntax::kJson;
   if (ends_with(lower, ".yaml") || ends_with(lower, ".yml")) syntax = RobotFileSyntax::kYaml;
-  return parse_robot_file(text, path, syntax);
+  return parse_robot_file(text, path, syntax, links);
 }
 
-kinematics::SerialChain load_robot(const std::string& name_or_path) {
+kinematics::SerialChain load_robot(const std::string& name_or_path, const UrdfChainOptions& links) {
   if (std::optional<kinematics::SerialChain> builtin = kinematics::robot_by_name(name_or_path)) {
+    VRREG_THROW_UNLESS((links.base_link.empty() && links.tip_link.empty()) || links.defaults_only,
+                       not_a_urdf(links, "the built-in " + builtin->name()));
     return *std::move(builtin);
   }
   // Anything by that name (a FIFO, a directory) is read as the file it was meant to be, and
@@ -339,7 +362,7 @@ kinematics::SerialChain load_robot(const std::string& name_or_path) {
     VRREG_THROW_UNLESS(false, "unknown robot '" << name_or_path << "': not one of " << names
                                                 << ", and no robot file by that name");
   }
-  return read_robot_file(name_or_path);
+  return read_robot_file(name_or_path, links);
 }
 
 }  // namespace vrreg::io

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// URDF -> joint list -> DH chain. urdfdom parses the XML and links the tree (it refuses a missing
-// link, a joint without limits where URDF requires them); it reports why through console_bridge,
-// which is captured here so that the error is one line naming the file. What urdfdom lets through
-// is refused here: XML nested deeper than TinyXML's recursion survives, and a link with two
-// parents (urdfdom keeps the last joint in name order).
+// URDF -> joint list -> DH chain (with couplings for mimic joints). urdfdom parses the XML and
+// links the tree (it refuses a missing link, a joint without limits where URDF requires them); it
+// reports why through console_bridge, which is captured here so that the error is one line naming
+// the file. What urdfdom lets through is refused here: XML nested deeper than TinyXML's recursion
+// survives, and a link with two parents (urdfdom keeps the last joint in name order).
 #include "vrreg/robot_io/urdf_robot.hpp"
 
 #include <console_bridge/console.h>
@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <exception>
 #include <map>
 #include <mutex>
@@ -198,7 +199,9 @@ class ChainBuilder {
       std::string names;
       for (const std::string& n : tied) names += (names.empty() ? "" : ", ") + n;
       fail("several leaf links end " + std::to_string(best) + " moving joints from the root (" +
-           names + "): name the tip link");
+           names +
+           "): name the tip link (--tip-link NAME on the command line, or tip_link in a "
+           "robot YAML file that names this URDF)");
     }
     return model_.getLink(tied.front());
   }
@@ -208,18 +211,102 @@ class ChainBuilder {
     c.name = j.name;
     c.T_parent_joint = origin;
     c.axis = Eigen::Vector3d(j.axis.x, j.axis.y, j.axis.z);
-    if (j.mimic) fail("joint '" + j.name + "' mimics another joint: not supported on the chain");
-    if (j.type == urdf::Joint::CONTINUOUS) {
-      return c;  // revolute within the default +-360 deg: every angle has a turn inside
-    }
-    c.type = j.type == urdf::Joint::PRISMATIC ? JointType::kPrismatic : JointType::kRevolute;
+    c.type = joint_type(j);
+    c.limits = joint_limits(j);
+    return c;
+  }
+
+  static JointType joint_type(const urdf::Joint& j) {
+    return j.type == urdf::Joint::PRISMATIC ? JointType::kPrismatic : JointType::kRevolute;
+  }
+
+  // A continuous joint turns within the default +-360 deg: every angle has a turn inside.
+  kinematics::JointLimits joint_limits(const urdf::Joint& j) const {
+    if (j.type == urdf::Joint::CONTINUOUS) return {};
     if (!j.limits) fail("joint '" + j.name + "' has no <limit>");
-    c.limits = {j.limits->lower, j.limits->upper};
     if (!(j.limits->lower < j.limits->upper)) {
       fail("joint '" + j.name + "': lower limit " + std::to_string(j.limits->lower) +
            " is not below upper limit " + std::to_string(j.limits->upper));
     }
-    return c;
+    return {j.limits->lower, j.limits->upper};
+  }
+
+  // The joint `j` mimics (<mimic joint="S" multiplier="m" offset="o"/>: q_j = m q_S + o), checked:
+  // S exists, moves, and is no mimic itself (one level: what a controller drives).
+  const urdf::Joint& mimic_source(const urdf::Joint& j) const {
+    const urdf::JointMimic& m = *j.mimic;
+    const urdf::JointConstSharedPtr source = model_.getJoint(m.joint_name);
+    if (!source) {
+      fail("joint '" + j.name + "' mimics joint '" + m.joint_name + "', which is not in the URDF");
+    }
+    if (!std::isfinite(m.multiplier) || m.multiplier == 0.0 || !std::isfinite(m.offset)) {
+      fail("joint '" + j.name + "' mimics '" + m.joint_name + "' with multiplier " +
+           std::to_string(m.multiplier) + " and offset " + std::to_string(m.offset) +
+           ": the multiplier must be finite and non-zero, the offset finite");
+    }
+    if (source->mimic) {
+      // Follow the mimics from j: back at j is a cycle, else a mimic of a mimic.
+      std::string path = j.name + " -> " + source->name;
+      std::set<std::string> seen{j.name, source->name};
+      for (urdf::JointConstSharedPtr k = source; k && k->mimic;) {
+        k = model_.getJoint(k->mimic->joint_name);
+        if (!k) break;
+        path += " -> " + k->name;
+        if (!seen.insert(k->name).second) {
+          fail("joint '" + j.name + "': its mimic tags form a cycle (" + path + ")");
+        }
+      }
+      fail("joint '" + j.name + "' mimics '" + source->name + "', which mimics '" +
+           source->mimic->joint_name + "': a mimic joint must follow a joint that is no mimic");
+    }
+    if (source->type != urdf::Joint::REVOLUTE && source->type != urdf::Joint::CONTINUOUS &&
+        source->type != urdf::Joint::PRISMATIC) {
+      fail("joint '" + j.name + "' mimics '" + source->name +
+           "', which is not a revolute, continuous or prismatic joint");
+    }
+    return *source;
+  }
+
+  // The joint variables of the chain `joints` (urdf joints `on_chain`, same order): each chain
+  // joint that mimics none is its own variable at its place; a joint that others on the chain
+  // mimic from off the chain (a side branch) is a variable at the place of its first follower.
+  kinematics::JointCouplings couplings(const std::vector<const urdf::Joint*>& on_chain) const {
+    struct Variable {
+      std::size_t place;
+      kinematics::JointVariable variable;
+    };
+    std::map<std::string, Variable> by_name;
+    const auto variable = [&](const urdf::Joint& j) {
+      return kinematics::JointVariable{j.name, joint_type(j), joint_limits(j)};
+    };
+    for (std::size_t r = 0; r < on_chain.size(); ++r) {
+      const urdf::Joint& j = *on_chain[r];
+      if (j.mimic) {
+        const urdf::Joint& source = mimic_source(j);
+        by_name.try_emplace(source.name, Variable{r, variable(source)});
+      } else {
+        by_name.insert_or_assign(j.name, Variable{r, variable(j)});
+      }
+    }
+    std::vector<const Variable*> order;
+    for (const auto& [name, v] : by_name) order.push_back(&v);
+    std::sort(order.begin(), order.end(),
+              [](const Variable* a, const Variable* b) { return a->place < b->place; });
+    kinematics::JointCouplings out;
+    std::map<std::string, int> index;
+    for (const Variable* v : order) {
+      index[v->variable.name] = static_cast<int>(out.variables.size());
+      out.variables.push_back(v->variable);
+    }
+    for (const urdf::Joint* j : on_chain) {
+      if (j->mimic) {
+        out.rows.push_back(
+            {index.at(j->mimic->joint_name), j->mimic->multiplier, j->mimic->offset});
+      } else {
+        out.rows.push_back({index.at(j->name), 1.0, 0.0});
+      }
+    }
+    return out;
   }
 
   // urdfdom links a child to the last of its parent joints (in name order) and drops the others.
@@ -263,6 +350,7 @@ class ChainBuilder {
     }
     // Down from the common link to the tip.
     std::vector<ChainJoint> joints;
+    std::vector<const urdf::Joint*> on_chain;
     Eigen::Isometry3d pending = T_common_base.inverse(Eigen::Isometry);
     bool below = false;
     for (auto it = up_from_tip.rbegin(); it != up_from_tip.rend(); ++it) {
@@ -280,6 +368,7 @@ class ChainBuilder {
         case urdf::Joint::CONTINUOUS:
         case urdf::Joint::PRISMATIC:
           joints.push_back(moving_joint(j, origin));
+          on_chain.push_back(&j);
           pending = Eigen::Isometry3d::Identity();
           break;
         default:
@@ -298,7 +387,11 @@ class ChainBuilder {
     }
     const std::string name = model_.getName().empty() ? "urdf" : model_.getName();
     try {
-      return kinematics::chain_from_joints(name, joints, pending);
+      kinematics::SerialChain chain = kinematics::chain_from_joints(name, joints, pending);
+      const bool mimics = std::any_of(on_chain.begin(), on_chain.end(),
+                                      [](const urdf::Joint* j) { return j->mimic != nullptr; });
+      if (mimics) chain = chain.with_couplings(couplings(on_chain));
+      return chain.with_urdf_links(base->name, tip->name);
     } catch (const FileError&) {
       throw;
     } catch (const InputError& e) {

@@ -106,8 +106,10 @@ PointAnswer ServedModel::answer(const PointRequest& request, double max_extrapol
     if (status != StencilStatus::kOk && status != StencilStatus::kExtrapolated) {
       PointAnswer refused = PointAnswer::refusal(
           ReplyCode::kNotCorrectable,
-          fmt::format("{}: {} (add 'extrapolate' to correct field models there anyway)",
-                      identity_.name, to_string(status)));
+          fmt::format("{}: {}{}", identity_.name, to_string(status),
+                      status == StencilStatus::kOutsideSupport
+                          ? " (add 'extrapolate' to correct field models there anyway)"
+                          : ""));
       refused.status = to_string(status);
       refused.uncorrected_robot_mm = mm_of(c.uncorrected_robot_m);
       return refused;

@@ -59,13 +59,22 @@ std::string str_cat_all(std::vector<std::string> parts) {
   return parts.front();
 }
 
+// The URScript expression of element `i` of `p_sensor_mm` as vrreg_text writes it.
+std::string urscript_number(int i) {
+  int scale = 1;
+  for (int k = 0; k < (i < 3 ? kUrscriptMmDecimals : kUrscriptRadDecimals); ++k) scale *= 10;
+  return fmt::format("vrreg_text(p_sensor_mm[{}], {})", i, scale);
+}
+
 // The URScript expression of the request line for the list `p` (3 numbers, or 6 with "rotvec").
 std::string urscript_request_expression(const std::string& model, bool pose) {
-  std::vector<std::string> parts = {"\"" + model + " \"", "p_sensor_mm[0]", "\" \"",
-                                    "p_sensor_mm[1]",     "\" \"",          "p_sensor_mm[2]"};
+  std::vector<std::string> parts = {
+      "\"" + model + " \"", urscript_number(0), "\" \"", urscript_number(1), "\" \"",
+      urscript_number(2)};
   if (pose) {
-    for (const char* more :
-         {"\" rotvec \"", "p_sensor_mm[3]", "\" \"", "p_sensor_mm[4]", "\" \"", "p_sensor_mm[5]"}) {
+    for (const std::string& more :
+         {std::string("\" rotvec \""), urscript_number(3), std::string("\" \""), urscript_number(4),
+          std::string("\" \""), urscript_number(5)}) {
       parts.push_back(more);
     }
   }
@@ -110,6 +119,33 @@ std::string urscript_client(const SnippetOptions& o) {
       "and\n"
       "# the orientation's (mrad), 0 when the method predicts none.\n"
       "# vrreg_pose_m(r): that pose as a URScript pose in metres, for movel / movej.\n"
+      "#\n"
+      "# vrreg_text(v, scale): v as decimal text to 1/scale: str_cat writes a float to 6\n"
+      "# significant digits (10 um at 1000 mm), an int exactly; the requests send mm to\n"
+      "# {mm_places} decimals and rotation vectors to {rad_places}.\n"
+      "def vrreg_text(v, scale):\n"
+      "  sign = \"\"\n"
+      "  a = v\n"
+      "  if v < 0:\n"
+      "    sign = \"-\"\n"
+      "    a = -v\n"
+      "  end\n"
+      "  whole = floor(a)\n"
+      "  fraction = floor((a - whole) * scale + 0.5)\n"
+      "  if fraction >= scale:\n"
+      "    whole = whole + 1\n"
+      "    fraction = fraction - scale\n"
+      "  end\n"
+      "  digits = str_cat(\"\", fraction)\n"
+      "  place = 10\n"
+      "  while place < scale:\n"
+      "    if fraction < place:\n"
+      "      digits = str_cat(\"0\", digits)\n"
+      "    end\n"
+      "    place = place * 10\n"
+      "  end\n"
+      "  return str_cat(str_cat(sign, whole), str_cat(\".\", digits))\n"
+      "end\n"
       "def vrreg_ask(request, n):\n"
       "  if not socket_open(\"{host}\", {port}, \"vrreg\"):\n"
       "    popup(\"vrreg: no correction service at {where}\", \"vrreg\", error=True, "
@@ -150,7 +186,8 @@ std::string urscript_client(const SnippetOptions& o) {
       "end\n",
       fmt::arg("version", version()), fmt::arg("model", o.model), fmt::arg("where", where),
       fmt::arg("host", o.host), fmt::arg("port", o.port), fmt::arg("timeout", o.timeout_s),
-      fmt::arg("auth", auth),
+      fmt::arg("auth", auth), fmt::arg("mm_places", kUrscriptMmDecimals),
+      fmt::arg("rad_places", kUrscriptRadDecimals),
       fmt::arg("point_request", urscript_request_expression(o.model, false)),
       fmt::arg("pose_request", urscript_request_expression(o.model, true)));
 }

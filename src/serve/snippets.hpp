@@ -24,8 +24,15 @@ struct SnippetOptions {
 /// service is unreachable, silent, or refuses the request.
 std::string urscript_client(const SnippetOptions& options);
 
-/// The request lines the URScript functions send, numbers as URScript's str_cat writes them
-/// (what the tests send to the service to check the snippet's bytes).
+/// Decimals of the numbers the URScript functions send (vrreg_text in the program): mm to 0.1 um
+/// (the text within 0.05 um of the program's float), rotation vectors to 0.1 urad (within 0.15
+/// urad: 32-bit products), near the spacing of URScript's 32-bit floats at a metre (0.12 um) and
+/// at pi (0.24 urad); str_cat alone writes 6 significant digits (5 um at 1.3 m).
+inline constexpr int kUrscriptMmDecimals = 4;
+inline constexpr int kUrscriptRadDecimals = 7;
+
+/// The request lines the URScript functions send, numbers as the program's vrreg_text writes
+/// them (what the tests send to the service to check the snippet's bytes).
 std::string urscript_request_line(const SnippetOptions& options, const std::string& x,
                                   const std::string& y, const std::string& z);
 std::string urscript_pose_request_line(const SnippetOptions& options,

@@ -14,6 +14,10 @@ namespace {
 
 kinematics::SerialChain perturbed(const kinematics::SerialChain& nominal, const RobotErrors& errors,
                                   double growth) {
+  VRREG_THROW_UNLESS(!nominal.coupled(), "simulated robot: robot '"
+                                             << nominal.name()
+                                             << "' has joints that follow others (mimic "
+                                                "joints), which the simulation does not model");
   VRREG_THROW_UNLESS(errors.dh_delta.size() == static_cast<std::size_t>(nominal.n_joints()),
                      "simulated robot: " << errors.dh_delta.size() << " DH errors for "
                                          << nominal.n_joints() << " joints");

@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // The joint model's orientation-only terms against closed forms: a constant small rotation of
 // one link, in its own frame (what a wrist's twist error does, hardly seen by positions), and a
-// joint-angle error linear in its joint are recovered, so predicted at new joints to rounding;
-// saved terms that do not fit the arm are refused.
+// joint-angle error linear in its joint are recovered, so predicted at new joints to rounding; a
+// wrist joint's cyclic angle error (a transmission error, which only orientations show) is found
+// by the periodogram at its frequency and predicted to 1e-9; saved terms that do not fit the arm
+// are refused.
 #include "correction/joint_rotation.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "vrreg/core/file_error.hpp"
 #include "vrreg/core/random.hpp"
@@ -46,6 +50,32 @@ TEST(JointRotation, ALinksConstantRotationIsRecoveredAndPredicted) {
   }
 }
 
+TEST(JointRotation, AWristJointsCyclicErrorIsFoundAndPredicted) {
+  const kinematics::SerialChain ur5 = kinematics::ur5();
+  Random rng(5);
+  const Eigen::MatrixXd q = random_joints(rng, 6, 300);
+  // Joint 5's transmission error, 0.4 mrad with a 20 deg period, and link 6 turned by r.
+  const double omega_per_rad = 2.0 * M_PI / (20.0 * M_PI / 180.0);
+  const Eigen::Vector3d r(-1e-3, 5e-4, 2e-3);
+  const auto g_of = [&](const Eigen::VectorXd& qj) {
+    const std::vector<Eigen::Isometry3d> frames = kinematics::link_frames(ur5, qj);
+    const kinematics::Jacobian J = kinematics::jacobian(ur5, qj);
+    return Eigen::Vector3d(frames[6].linear() * r +
+                           J.block<3, 1>(3, 4) * 4e-4 * std::sin(omega_per_rad * qj(4) + 0.7));
+  };
+  Points3 g(3, q.cols());
+  for (Eigen::Index j = 0; j < q.cols(); ++j) g.col(j) = g_of(q.col(j));
+  const JointRotationTerms terms = fit_joint_rotation(ur5, q, g).terms;
+  ASSERT_EQ(terms.periodic.size(), 1U);
+  EXPECT_EQ(terms.periodic[0].joint, 4);
+  EXPECT_NEAR(terms.periodic[0].omega_per_rad, omega_per_rad, 1e-9 * omega_per_rad);
+  const Eigen::MatrixXd q_new = random_joints(rng, 6, 50);
+  for (Eigen::Index j = 0; j < q_new.cols(); ++j) {
+    EXPECT_LT((joint_rotation_rad(terms, ur5, q_new.col(j)) - g_of(q_new.col(j))).norm(), 1e-9)
+        << j;
+  }
+}
+
 TEST(JointRotation, NoTermsWhenThereIsNothingToFit) {
   const kinematics::SerialChain ur5 = kinematics::ur5();
   Random rng(4);
@@ -55,6 +85,7 @@ TEST(JointRotation, NoTermsWhenThereIsNothingToFit) {
   const JointRotationTerms terms = fit_joint_rotation(ur5, q, noise).terms;
   EXPECT_EQ(terms.degree, -1);
   EXPECT_EQ(terms.link_rotations_rad.size(), 0);
+  EXPECT_TRUE(terms.periodic.empty());  // noise has no peak above the false-alarm threshold
   // Only the constant fitted with the terms, the noise's mean: 1e-4 / sqrt(100) per axis.
   EXPECT_LT(joint_rotation_rad(terms, ur5, q.col(0)).norm(), 5e-5);
 }
@@ -73,6 +104,15 @@ TEST(JointRotation, TermsThatDoNotFitTheArmAreRefused) {
   EXPECT_NO_THROW(validate_joint_rotation(t, 6));
   t.link_rotations_rad(3) = std::nan("");
   EXPECT_THROW(validate_joint_rotation(t, 6), InputError);
+  t.link_rotations_rad(3) = 0.0;
+  t.periodic = {{5, 18.0}};
+  EXPECT_THROW(validate_joint_rotation(t, 6), InputError);  // no coefficients for the term
+  t.periodic_coefficients = Eigen::VectorXd::Zero(2);
+  EXPECT_NO_THROW(validate_joint_rotation(t, 6));
+  t.periodic = {{6, 18.0}};
+  EXPECT_THROW(validate_joint_rotation(t, 6), InputError);  // a seventh joint
+  t.periodic = {{5, 0.0}};
+  EXPECT_THROW(validate_joint_rotation(t, 6), InputError);  // no frequency
 }
 
 }  // namespace

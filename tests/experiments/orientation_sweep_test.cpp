@@ -6,11 +6,14 @@
 // targets: never worse than uncorrected, the predicted sd calibrated (RMS angle / sd 0.7-1.4),
 // and auto near the noise floor (a noise-free re-simulation of the same seed): the test beds'
 // physics is joint-based (DH errors, transmission errors, gravity compliance). Each scenario's
-// figures are printed as `sweep | ...` lines: the table in docs/orientation.md.
+// figures are printed as `sweep | ...` lines: the table in docs/orientation.md. The same fits
+// check the positions: never worse than none at the targets (the guard), and auto's choice
+// against the best candidate there (`choice | ...` lines).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,6 +23,7 @@
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/inverse_kinematics.hpp"
+#include "vrreg/metrics/errors.hpp"
 #include "vrreg/pipeline/evaluate.hpp"
 #include "vrreg/pipeline/register_fiducials.hpp"
 #include "vrreg/simulation/plan_acquisition.hpp"
@@ -104,13 +108,33 @@ void check_scenario(const Scenario& s) {
   RegisterOptions reg;
   reg.rigid_body_statistics = false;
   reg.robot = tb.nominal;
-  for (const InterpolationMethod m : {InterpolationMethod::kAuto, InterpolationMethod::kJoint,
-                                      InterpolationMethod::kKriging, InterpolationMethod::kRbf}) {
+  // Positions: RMS_T over every target as the robot gets it (a flagged target uncorrected).
+  double auto_rms_t_m = 0.0;
+  InterpolationMethod auto_chose = InterpolationMethod::kAuto;
+  double best_rms_t_m = std::numeric_limits<double>::infinity();
+  InterpolationMethod best = InterpolationMethod::kAuto;
+  for (const InterpolationMethod m :
+       {InterpolationMethod::kAuto, InterpolationMethod::kJoint, InterpolationMethod::kKriging,
+        InterpolationMethod::kRbf, InterpolationMethod::kScattered,
+        InterpolationMethod::kTrilinear}) {
+    if (m == InterpolationMethod::kTrilinear && s.scattered) continue;  // needs a lattice
     reg.interpolation.method = m;
     const RegistrationModel model = register_fiducials(set, reg).model;
     ASSERT_TRUE(model.orientation_corrector) << s.name;
     const EvaluateResult r = evaluate(model, set);
     ASSERT_TRUE(r.orientation) << s.name;
+    const double rms_t_m = root_mean_square(r.cor_tre_m);
+    const double unc_rms_t_m = root_mean_square(r.unc_tre_m);
+    // The positions' guard: never worse than none at the targets (a 2 % allowance for the
+    // targets' own sampling: cross-validation judged on the fiducials).
+    EXPECT_LE(rms_t_m, 1.02 * unc_rms_t_m) << s.name << ", " << to_string(m);
+    if (m == InterpolationMethod::kAuto) {
+      auto_rms_t_m = rms_t_m;
+      auto_chose = model.corrector->method();
+    } else if (rms_t_m < best_rms_t_m) {
+      best_rms_t_m = rms_t_m;
+      best = m;
+    }
     const OrientationEvaluation& o = *r.orientation;
     const std::string what = s.name + ", " + to_string(m) +
                              " (orientation: " + to_string(model.orientation_corrector->method()) +
@@ -130,12 +154,22 @@ void check_scenario(const Scenario& s) {
       EXPECT_GT(o.calibration.rms_ratio, 0.7);
       EXPECT_LT(o.calibration.rms_ratio, 1.4);
     }
-    // 1.3x the floor; a UR5 tool turned at every location is held to 1.45x, what the joint
-    // model reaches there today (1.33-1.39x: docs/orientation.md).
+    // Auto within 1.3x the floor in every scenario; on the UR5 with the tool turned at every
+    // location, by the wrist joints' cyclic (transmission) errors, which only orientations show.
     if (m == InterpolationMethod::kAuto) {
-      EXPECT_LT(o.cor_rms_rad, (s.varied && !s.kuka ? 1.45 : 1.3) * floor_rad);
+      EXPECT_LT(o.cor_rms_rad, 1.3 * floor_rad);
+      if (s.varied && !s.kuka) {
+        EXPECT_NE(model.orientation_corrector->describe().find("cyclic joint-angle error"),
+                  std::string::npos)
+            << model.orientation_corrector->describe();
+      }
     }
   }
+  // Auto's choice for the positions against the best candidate at the held-out targets: the
+  // `choice` lines are the table in docs/field-models.md.
+  std::printf("choice | %s | %s | %.4f | %s | %.4f | %.3f\n", s.name.c_str(), to_string(auto_chose),
+              1e3 * auto_rms_t_m, to_string(best), 1e3 * best_rms_t_m, auto_rms_t_m / best_rms_t_m);
+  EXPECT_LT(auto_rms_t_m, 1.25 * best_rms_t_m) << s.name << ": auto chose " << to_string(auto_chose);
 }
 
 class OrientationSweep : public ::testing::TestWithParam<Scenario> {};

@@ -16,7 +16,9 @@
 #include <numbers>
 #include <string>
 
+#include "chain_test_support.hpp"
 #include "io_test_helpers.hpp"
+#include "urdf_pose.hpp"
 #include "vrreg/core/random.hpp"
 #include "vrreg/core/types.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
@@ -40,14 +42,7 @@ std::string urdf_path(const std::string& name) {
   return std::string(VRREG_TEST_DATA_DIR) + "/urdf/" + name;
 }
 
-Eigen::Isometry3d to_eigen(const urdf::Pose& p) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  double x = 0, y = 0, z = 0, w = 1;
-  p.rotation.getQuaternion(x, y, z, w);
-  t.linear() = Eigen::Quaterniond(w, x, y, z).toRotationMatrix();
-  t.translation() << p.position.x, p.position.y, p.position.z;
-  return t;
-}
+using vrreg::testing::to_eigen;
 
 Eigen::Isometry3d to_eigen(const KDL::Frame& f) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
@@ -111,17 +106,10 @@ KDL::Chain kdl_chain(const std::vector<urdf::JointConstSharedPtr>& path) {
 }
 
 JointVector random_joints(Random& rng, const SerialChain& chain) {
-  JointVector q(chain.n_joints());
-  for (int i = 0; i < chain.n_joints(); ++i) {
-    q(i) = rng.uniform(chain.limit(i).lower_rad, chain.limit(i).upper_rad);
-  }
-  return q;
+  return vrreg::testing::joints_within_limits(rng, chain);
 }
 
-double pose_gap(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  return std::max((a.translation() - b.translation()).norm(),
-                  kinematics::rotation_angle_between(a.linear(), b.linear()));
-}
+using vrreg::testing::pose_gap;
 
 struct UrdfCase {
   const char* file;

@@ -13,6 +13,7 @@
 #include "serve/service.hpp"
 #include "serve/snippets.hpp"
 #include "serve_test_support.hpp"
+#include "urscript_text.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/rotation.hpp"
 
@@ -231,7 +232,7 @@ TEST_F(ServeOrientation, SnippetPoseRequestsAreAnswered) {
   EXPECT_THAT(urscript, HasSubstr("def vrreg_correct_pose(p_sensor_mm):"));
   EXPECT_THAT(urscript, HasSubstr("reply = vrreg_ask("));
   EXPECT_THAT(urscript, HasSubstr(", 8)\n  if reply[7] < 0:"));
-  EXPECT_THAT(urscript, HasSubstr("str_cat(\" rotvec \", p_sensor_mm[3])"));
+  EXPECT_THAT(urscript, HasSubstr("str_cat(\" rotvec \", vrreg_text(p_sensor_mm[3], 10000000))"));
   EXPECT_THAT(urscript,
               HasSubstr("return p[r[0] / 1000, r[1] / 1000, r[2] / 1000, r[3], r[4], r[5]]"));
   const std::string krl = krl_pose_client(s);
@@ -245,11 +246,15 @@ TEST_F(ServeOrientation, SnippetPoseRequestsAreAnswered) {
   const Location& target = cell_.locations[cell_.select(Role::kTarget)[9]];
   const Eigen::Vector3d mm = units::m_to_mm(1.0) * target.sensor_m;
   const Eigen::Matrix3d R = target.q_sensor_marker->toRotationMatrix();
-  // URScript's str_cat: 6 significant digits.
+  // The program's vrreg_text: mm to 4 decimals, the rotation vector to 7.
   const Eigen::Vector3d w = rotation_log(R);
   std::array<std::string, 6> pose;
-  for (int a = 0; a < 3; ++a) pose[static_cast<std::size_t>(a)] = format_general(mm(a), 6);
-  for (int a = 0; a < 3; ++a) pose[static_cast<std::size_t>(a) + 3] = format_general(w(a), 6);
+  for (int a = 0; a < 3; ++a) {
+    pose[static_cast<std::size_t>(a)] =
+        vrreg::testing::urscript_vrreg_text(static_cast<float>(mm(a)), 10000);
+    pose[static_cast<std::size_t>(a) + 3] =
+        vrreg::testing::urscript_vrreg_text(static_cast<float>(w(a)), 10000000);
+  }
   const std::string ur_line = urscript_pose_request_line(s, pose);
   EXPECT_THAT(ur_line, HasSubstr(" rotvec "));
   const std::string ur_reply = c.ask(ur_line);

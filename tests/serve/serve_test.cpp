@@ -14,6 +14,7 @@
 #include "serve/service.hpp"
 #include "serve/snippets.hpp"
 #include "serve_test_support.hpp"
+#include "urscript_text.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 
@@ -337,13 +338,13 @@ TEST(Service, UrscriptSnippetBytesAreAnswered) {
   EXPECT_THAT(program, HasSubstr("socket_read_ascii_float(n, \"vrreg\", 2)"));
   EXPECT_THAT(program, HasSubstr(", 4)\n  if reply[4] < 0:"));
   // The bytes URScript sends: socket_send_line appends "\r\n"? The manual says a newline; both
-  // are answered. str_cat writes a float as URScript prints it, e.g. "412.5" or "-90".
+  // are answered. The program's vrreg_text writes each coordinate to 0.1 um, e.g. "412.5000".
   LineClient c(service.line_port());
   EXPECT_EQ(c.ask("auth 0123456789abcdef-secret\r\n"), "(1)\n");
   const Eigen::Vector3d p = sensor_points_mm(1, 4)[0];
-  const std::string x = format_general(p.x(), 6);
-  const std::string y = format_general(p.y(), 6);
-  const std::string z = format_general(p.z(), 6);
+  const std::string x = vrreg::testing::urscript_vrreg_text(static_cast<float>(p.x()), 10000);
+  const std::string y = vrreg::testing::urscript_vrreg_text(static_cast<float>(p.y()), 10000);
+  const std::string z = vrreg::testing::urscript_vrreg_text(static_cast<float>(p.z()), 10000);
   const std::string sent = urscript_request_line(s, x, y, z);
   EXPECT_EQ(sent, "cell " + x + " " + y + " " + z + "\n");
   const Eigen::Vector3d as_sent(std::stod(x), std::stod(y), std::stod(z));

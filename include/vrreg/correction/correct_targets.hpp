@@ -2,10 +2,12 @@
 #pragma once
 // Correcting targets with a registration model: pick fiducials and weights (octuplet, grid or
 // scattered), interpolate the corrections (Eq. 7), correct (Eq. 8) and map to the robot frame.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "vrreg/core/types.hpp"
+#include "vrreg/correction/correction_guard.hpp"
 #include "vrreg/correction/interpolation.hpp"
 #include "vrreg/correction/rrbc.hpp"
 
@@ -34,13 +36,17 @@ struct TargetCorrection {
   /// Field models (docs/field-models.md): the predicted standard uncertainty of each corrected
   /// target's 3D error [m] (NaN where flagged); empty for the paper's stencils.
   Eigen::VectorXd predicted_sd_m{};
+  /// Whether the correction was applied and the figures that decided it (correction_guard.hpp);
+  /// none when the corrector was not guarded.
+  std::optional<CorrectionGuard> guard{};
 };
 
 /// Corrects targets measured in the sensor frame with the fiducial corrections of `field`.
 /// targets_sensor_m: measured targets [m]; targets_robot_nominal_m: their nominal robot positions
 /// [m] (needed by octuplet only; may have 0 columns otherwise). Throws InputError when the method
 /// cannot be used at all (e.g. grid on fiducials that hold no complete grid, octuplet without a
-/// cube edge, scattered on coplanar fiducials). targets_sequence: where each target was read (its
+/// cube edge, scattered on coplanar fiducials). Not guarded (CorrectorOptions::guard): the
+/// paper's method as published. targets_sequence: where each target was read (its
 /// file line), or empty; with it and the fiducials' source lines, octuplet accepts corners
 /// measured more than once and takes the reading nearest the target's.
 TargetCorrection correct_targets(const CorrectionField& field,

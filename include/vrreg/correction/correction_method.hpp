@@ -52,6 +52,9 @@ struct MethodPredictions {
   /// The predicted standard uncertainty of a corrected point's 3D error [m], for methods with
   /// their own (kriging); empty otherwise.
   Eigen::VectorXd sd_m{};
+  /// For methods that judge gaps of their layout (FittedMethod::judges_gaps): the sd a point's
+  /// gap adds to its correction's (in quadrature) [m]; empty otherwise.
+  Eigen::VectorXd gap_sd_m{};
 };
 
 /// Settings a method is fitted with: the model's interpolation settings and Procedure 2's.
@@ -84,6 +87,10 @@ class FittedMethod {
   [[nodiscard]] virtual MethodNeeds needs() const { return {}; }
   /// True when predict() fills MethodPredictions::sd_m.
   [[nodiscard]] virtual bool has_own_sd() const { return false; }
+  /// True when predict() fills MethodPredictions::gap_sd_m: the method's support has gaps inside
+  /// its ranges (the joint model: a commanded joint between the fiducials' values of it, far
+  /// from every one), answered with a wider sd, or flagged where nothing measures them.
+  [[nodiscard]] virtual bool judges_gaps() const { return false; }
   /// Points predicted together by one task: blocks start at multiples of it, so results do not
   /// depend on how a batch is split over threads.
   [[nodiscard]] virtual Eigen::Index block_size() const { return 4096; }

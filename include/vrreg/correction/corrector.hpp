@@ -16,6 +16,7 @@
 #include "vrreg/core/types.hpp"
 #include "vrreg/correction/correct_targets.hpp"
 #include "vrreg/correction/correction_method.hpp"
+#include "vrreg/correction/correction_guard.hpp"
 #include "vrreg/correction/corrector_data.hpp"
 #include "vrreg/correction/cross_validation.hpp"
 #include "vrreg/correction/interpolation.hpp"
@@ -37,6 +38,10 @@ struct CorrectorOptions {
   /// to every sd): microseconds a point where kriging's exact sd costs milliseconds. Off: the
   /// exact model.
   bool tabulate = true;
+  /// Judge the fitted correction by its cross-validated error against no correction's and,
+  /// when it is not better, answer every target uncorrected (correction_guard.hpp). Off: for a
+  /// field fitted inside another corrector that judges itself (the orientations').
+  bool guard = true;
   /// Throws InputError on settings that cannot work (octuplet without a cube edge, folds < 2).
   void validate() const;
 };
@@ -80,6 +85,9 @@ struct SavedCorrector {
   double cv_rms_m = 0.0;  ///< the method's cross-validated RMS (kGlobalCv, kLocalCv) [m]
   /// Held-out squared error (3D) per fiducial [m^2], NaN where not predicted (kLocalCv).
   Eigen::VectorXd cv_squared_error_m2{};
+  /// Whether the correction is applied, and the figures that decided it; none: not guarded
+  /// (a model saved without the guard is applied).
+  std::optional<CorrectionGuard> guard{};
 };
 
 /// A correction method fitted on one registration's fiducials (see the file comment).
@@ -118,6 +126,11 @@ class Corrector {
   [[nodiscard]] SdSource sd_source() const;
   /// `auto`'s cross-validation table (when it chose the method).
   [[nodiscard]] const std::optional<CrossValidation>& cross_validation() const;
+  /// The guard's figures (CorrectorOptions::guard), none when the corrector was not guarded.
+  [[nodiscard]] const std::optional<CorrectionGuard>& guard() const;
+  /// False when the guard found the correction not better than none: every target is then
+  /// answered uncorrected with StencilStatus::kNotBetterThanNone.
+  [[nodiscard]] bool applied() const;
   /// The arm's orientation error at commanded joints (FittedMethod::rotation_error_rad): the
   /// joint-space model's, nullopt for every other method; `joint_angles_only`: the part its
   /// joint-angle errors give on the nominal arm (JointErrorModel::predict_joint_angle_rotation_rad).

@@ -31,22 +31,25 @@ struct CrossValidationRow {
   Eigen::Vector3d rms_axis_m = Eigen::Vector3d::Zero();  ///< the same per sensor axis [m]
   Eigen::Index n_predicted = 0;  ///< fiducials the held-out models could predict
   /// Held-out fiducials not predicted because they registered outside the box of the fold's
-  /// training fiducials: the method's support, not its failure (not counted against it).
+  /// training fiducials: the method's support, not a failure of its fit (its own RMS leaves
+  /// them out; auto's ranking counts them at their uncorrected error).
   Eigen::Index n_outside_training = 0;
-  /// RMS (3D) over the fiducials every compared method predicted: what `auto` compares [m].
-  double rms_common_m = 0.0;
+  /// RMS (3D) over the fiducials any compared method predicted, this method's misses among them
+  /// at their uncorrected error: what `auto` ranks by [m].
+  double rms_ranked_m = 0.0;
   /// |predicted - measured|^2 per fiducial [m^2]; NaN where not predicted.
   Eigen::VectorXd squared_error_m2{};
   double seconds = 0.0;  ///< fit and predict over all folds (wall time)
 };
 
 /// The table `--interpolation auto` prints, and its choice: the lowest RMS over the fiducials
-/// every compared method predicted (lattice and Delaunay methods cannot predict at the layout's
-/// edge; comparing each over its own subset would favour them).
+/// any compared method predicted, each method's misses at their uncorrected error (lattice and
+/// Delaunay methods cannot predict at the layout's edge: comparing each over its own subset
+/// would favour them, comparing on the subset all predicted favours models good in the interior).
 struct CrossValidation {
   /// K folds, or 1: a large cell's one held-out sample (kLargeCellFiducials).
   int folds = 5;
-  Eigen::Index n_common = 0;  ///< fiducials in the common comparison
+  Eigen::Index n_ranked = 0;  ///< fiducials in the ranking (any method predicted them)
   std::uint64_t seed = 1;     ///< of the shuffle that deals the fold units to folds
   /// Fold units: fiducials dealt to folds together (clusters; == the fiducial count when every
   /// fiducial stands alone, as on a lattice).

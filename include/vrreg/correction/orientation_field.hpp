@@ -18,6 +18,7 @@
 #include "vrreg/correction/corrector.hpp"
 #include "vrreg/correction/corrector_data.hpp"
 #include "vrreg/correction/rrbc.hpp"
+#include "vrreg/kinematics/joint_error_model.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
 
 namespace vrreg {
@@ -66,7 +67,8 @@ PositionRotation parse_position_rotation(const std::string& name);
 /// near the wrist's axes), fitted on what the position model leaves of the fiducials'
 /// orientations: g(q) = sum_i z_i(q) dq_i(q_i) + sum_i R_base_i(q) r_i, z_i the axis of revolute
 /// joint i, dq_i a Legendre series of `degree` over the joint's fitted range [q_lo, q_hi]
-/// (degree -1: none) and r_i link i's rotation in its own frame.
+/// (degree -1: none) plus any periodic terms of joint i, and r_i link i's rotation in its own
+/// frame.
 struct JointRotationTerms {
   int degree = -1;
   Eigen::VectorXd q_lo_rad{};
@@ -87,6 +89,12 @@ struct JointRotationTerms {
   Eigen::Vector3d constant_rad = Eigen::Vector3d::Zero();
   /// kScaledJointAngles: the factor of each joint's dq_i(q) term (n_joints); empty otherwise.
   Eigen::VectorXd position_joint_scales{};
+  /// Cyclic joint-angle errors that only orientations show (a wrist joint's transmission error,
+  /// which hardly moves a marker near the wrist's axes): term m adds z_i(q) (s_m sin(w_m q_i) +
+  /// c_m cos(w_m q_i)), i = periodic[m].joint, found by a periodogram of what the smooth terms
+  /// leave and kept when cross-validation says so. Empty: none.
+  std::vector<kinematics::JointPeriodicTerm> periodic{};
+  Eigen::VectorXd periodic_coefficients{};  ///< s_m, c_m of each periodic term [rad]
   /// The design's columns and the combinations the fit kept (truncated SVD); 0 when unknown.
   int columns = 0;
   int rank = 0;

@@ -19,19 +19,25 @@ Points3 fiducial_corrections(const SimilarityTransform& T_robot_sensor,
 enum class StencilStatus {
   kOk,             ///< weights found
   kOutsideGrid,    ///< grid: registered position outside the grid
-  kOutsideHull,    ///< scattered: outside the convex hull of the fiducials (never extrapolated)
+  kOutsideHull,    ///< scattered: outside the convex hull of the fiducials
   kMissingCorner,  ///< octuplet: a cube corner has no fiducial
   /// A model of the whole field (kriging, rbf, joint): outside the fiducials' box (and, for the
-  /// joint model, the joint ranges they were measured at): never extrapolated.
+  /// joint model, the joint ranges they were measured at, or in a gap between the values of a
+  /// joint that nothing measured).
   kOutsideSupport,
-  /// Outside the support, corrected anyway because the caller asked (extrapolate): the
-  /// correction at the nearest point of the support, its sd widened for the distance.
+  /// Outside the support (any of the statuses above but a hole inside the layout), corrected
+  /// anyway because the caller asked (extrapolate): the correction at the nearest point of the
+  /// support, its sd widened for the distance (docs/uncertainty.md).
   kExtrapolated,
   /// Fewer fiducials than any correction method needs (scattered's 4): uncorrected.
   kTooFewFiducials,
   /// The method's cross-validated error on the fiducials is not below the uncorrected one:
   /// applying it would make the point worse on average, so it is answered uncorrected.
   kNotBetterThanNone,
+  /// The fiducials lie in a plane or on a line (scattered, linear): no tetrahedron holds any
+  /// point, so every point is answered uncorrected (the registration itself needs only three
+  /// points off a line).
+  kFlatLayout,
 };
 
 /// Whether a target with this status was corrected (ok, or extrapolated on request).

@@ -19,9 +19,11 @@ using Jacobian = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, kM
 Eigen::Isometry3d forward_kinematics(const SerialChain& chain, const JointRef& q_rad);
 /// T_dh0_flange: the flange (last DH frame) in the DH base frame, ignoring base and tool.
 Eigen::Isometry3d flange_in_dh0(const SerialChain& chain, const JointRef& q_rad);
-/// T_base_i for i = 0..n: frame 0 is the DH base, frame i follows joint i; n+1 poses (m).
+/// T_base_i for i = 0..n_rows(): frame 0 is the DH base, frame i follows DH row i; n_rows()+1
+/// poses (m).
 std::vector<Eigen::Isometry3d> link_frames(const SerialChain& chain, const JointRef& q_rad);
-/// Geometric Jacobian of the TCP in the base frame: [v; w] = J(q) * dq, v of the TCP point.
+/// Geometric Jacobian of the TCP in the base frame: [v; w] = J(q) * dq, v of the TCP point; one
+/// column per joint variable (a coupled variable's: its rows' columns times their multipliers).
 Jacobian jacobian(const SerialChain& chain, const JointRef& q_rad);
 
 }  // namespace vrreg::kinematics

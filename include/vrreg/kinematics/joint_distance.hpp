@@ -18,17 +18,18 @@ enum class JointNorm { kL2, kLinf };
 const char* to_string(JointNorm norm);
 
 /// Which joints are slides. A revolute joint's difference wraps into [-pi, pi); a prismatic
-/// joint's [m] does not (a carriage 6.4 m along is not near one at 0.1 m). In the norms a metre
-/// of travel weighs as a radian: both move an arm's marker by about its reach.
+/// joint's [m] does not (a carriage 6.4 m along is not near one at 0.1 m), nor does that of a
+/// revolute joint that other joints follow by other than whole turns (SerialChain::wraps). In the
+/// norms a metre of travel weighs as a radian: both move an arm's marker by about its reach.
 class JointKinds {
  public:
   JointKinds() = default;  ///< every joint revolute
   explicit JointKinds(const SerialChain& chain);
-  /// a_i - b_i, wrapped unless joint i is prismatic [rad or m].
+  /// a_i - b_i, wrapped unless joint i does not wrap [rad or m].
   [[nodiscard]] double difference(Eigen::Index i, double a, double b) const;
 
  private:
-  std::vector<bool> prismatic_{};
+  std::vector<bool> prismatic_{};  // true: the joint's differences are not wrapped
 };
 
 /// sqrt(sum wrap(a_i - b_i)^2) [rad]; sizes must match (throws InputError).
@@ -53,7 +54,7 @@ std::vector<int> order_by_distance(const Eigen::Ref<const Eigen::MatrixXd>& cand
 
 /// The 2 pi shift of each joint of `q_rad` that lies in the chain's limits and is nearest
 /// `reference_rad` (what a controller commands); empty if some joint has no shift in its limits.
-/// Prismatic joints are not shifted, only checked.
+/// Joints that do not wrap (prismatic ones, SerialChain::wraps) are not shifted, only checked.
 std::optional<JointVector> shift_nearest(const SerialChain& chain, const JointRef& q_rad,
                                          const JointRef& reference_rad);
 /// The 2 pi shift of each joint within the limits with the smallest |q|; empty if none fits.

@@ -15,10 +15,18 @@
 //   p_actual: the nominal DH table plus deltas of a, d, alpha per row and a marker offset delta,
 //   trend: 10 monomials of the nominal position per axis (absorbs a slightly wrong registration).
 // Without Gauss-Newton iterations the model is its first-order (linear) expansion at zero.
+//
+// Joints that follow others (URDF mimic joints, SerialChain::couplings) are physical joints with
+// errors of their own: every per-joint term (dq_i, the DH deltas, periodic terms, ranges) is per
+// DH row, evaluated at the rows' values the commanded variables give. A coupled chain's model is
+// the model of the same chain with every row its own joint (SerialChain::uncoupled), asked at
+// row_values(q); where two rows' terms act alike (e.g. two parallel slides), the rank-revealing
+// solve keeps one of them.
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "vrreg/core/types.hpp"
@@ -30,14 +38,14 @@ namespace vrreg::kinematics {
 /// A cyclic angle error of one joint, s sin(omega q) + c cos(omega q) [rad], e.g. a gear's or a
 /// harmonic drive's transmission error with period 2 pi / omega. The amplitudes s, c are fitted.
 struct JointPeriodicTerm {
-  int joint = 0;               ///< 0-based joint index
+  int joint = 0;               ///< 0-based physical joint (DH row) index
   double omega_per_rad = 0.0;  ///< angular frequency in the joint angle [1/rad], > 0
 };
 
 /// What the model contains and how it is fitted.
 struct JointErrorModelOptions {
-  /// Legendre degree of each joint's angle-error function (0: a constant offset only). Empty:
-  /// chosen per joint by K-fold cross-validation among 0..max_joint_degree.
+  /// Legendre degree of each physical joint's (DH row's) angle-error function (0: a constant
+  /// offset only). Empty: chosen per joint by K-fold cross-validation among 0..max_joint_degree.
   std::vector<int> joint_degrees{};
   int max_joint_degree = 40;  ///< largest degree the automatic choice tries
   /// Periodic terms of the joint-angle errors. Empty: found from the fiducials when the degrees
@@ -65,12 +73,12 @@ struct JointErrorModelOptions {
 /// Everything a fitted joint-space error model is, besides its nominal chain: what
 /// JointErrorModel::restore needs to predict exactly as the fitted model did.
 struct JointErrorModelParameters {
-  std::vector<int> joint_degrees{};  ///< Legendre degree per joint
+  std::vector<int> joint_degrees{};  ///< Legendre degree per physical joint (DH row)
   std::vector<JointPeriodicTerm> periodic_terms{};
   bool dh_deltas = true;
   bool marker_offset = true;
   int trend_degree = 2;
-  Eigen::VectorXd q_lo_rad{};  ///< each joint's fitted range [rad]
+  Eigen::VectorXd q_lo_rad{};  ///< each physical joint's (DH row's) fitted range [rad]
   Eigen::VectorXd q_hi_rad{};
   Eigen::Vector3d trend_centre_m = Eigen::Vector3d::Zero();
   double trend_scale_m = 1.0;
@@ -115,10 +123,17 @@ class JointErrorModel {
   /// nominal arm, R_nominal(q + dq(q)) R_nominal(q)^T [rad]: without the DH deltas, which a
   /// fixed tool orientation leaves in combinations positions cannot tell apart.
   [[nodiscard]] Eigen::Vector3d predict_joint_angle_rotation_rad(const JointRef& q_rad) const;
-  /// The fitted joint-angle errors dq(q) at commanded joints `q_rad` [rad; m for prismatic].
+  /// The fitted joint-angle errors dq(q) at commanded joints `q_rad`, one per physical joint
+  /// (DH row; the joint variables' own on an uncoupled chain) [rad; m for prismatic].
   [[nodiscard]] JointVector joint_angle_errors_rad(const JointRef& q_rad) const;
   /// predict_m for each joint vector, one column each.
   [[nodiscard]] Points3 predict_m(const std::vector<JointVector>& q_rad) const;
+
+  /// Number of commanded joint variables the model is asked at.
+  [[nodiscard]] int n_joints() const;
+  /// Fitted range of each commanded joint variable (lower, upper) [rad; m for prismatic]: the
+  /// rows' ranges of JointErrorModelParameters, as values of the variables they follow.
+  [[nodiscard]] std::pair<Eigen::VectorXd, Eigen::VectorXd> joint_range_rad() const;
 
   /// Observed minus predicted error at each fiducial (3 x J, m), e.g. for kriging what remains.
   [[nodiscard]] const Points3& residuals_m() const { return residuals_m_; }
@@ -143,6 +158,11 @@ class JointErrorModel {
                            std::vector<int> degrees, double selection_cv_rms_m);
 
  private:
+  // The same model asked by the joint variables of `commanded` (whose rows it was fitted on).
+  [[nodiscard]] JointErrorModel as_commanded_by(const SerialChain& commanded) const;
+  // Every DH row's value at commanded joints `q_rad` (checked).
+  [[nodiscard]] JointVector rows_at(const JointRef& q_rad) const;
+
   std::shared_ptr<const State> state_{};
   Points3 residuals_m_{};
   int rank_ = 0;

@@ -16,11 +16,12 @@ struct MarkerPartials {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< p = T_base_flange(q) p_flange_marker
   /// R_base_flange(q): d p / d p_flange_marker [m/m].
   Eigen::Matrix3d R_base_flange = Eigen::Matrix3d::Identity();
-  Eigen::Matrix3Xd d_joint{};  ///< 3 x n, column i: d p / d q_i [m/rad; prismatic: m/m]
-  Eigen::Matrix3Xd d_theta{};  ///< 3 x n, column i: d p / d theta_offset_i [m/rad]
-  Eigen::Matrix3Xd d_a{};      ///< 3 x n, column i: d p / d a_i [m/m]
-  Eigen::Matrix3Xd d_d{};      ///< 3 x n, column i: d p / d d_i [m/m]
-  Eigen::Matrix3Xd d_alpha{};  ///< 3 x n, column i: d p / d alpha_i [m/rad]
+  /// 3 x n_joints(), column i: d p / d q_i of joint variable i [m/rad; prismatic: m/m]
+  Eigen::Matrix3Xd d_joint{};
+  Eigen::Matrix3Xd d_theta{};  ///< 3 x n_rows(), column i: d p / d theta_offset_i [m/rad]
+  Eigen::Matrix3Xd d_a{};      ///< 3 x n_rows(), column i: d p / d a_i [m/m]
+  Eigen::Matrix3Xd d_d{};      ///< 3 x n_rows(), column i: d p / d d_i [m/m]
+  Eigen::Matrix3Xd d_alpha{};  ///< 3 x n_rows(), column i: d p / d alpha_i [m/rad]
 };
 
 /// Position of the marker at `p_flange_marker_m` (flange = last DH frame) and its partials at

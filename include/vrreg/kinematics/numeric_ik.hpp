@@ -42,10 +42,12 @@ IkResult numeric_inverse_kinematics(const SerialChain& chain, const Eigen::Isome
                                     const NumericIkOptions& options = {},
                                     const std::optional<JointVector>& q_start_rad = std::nullopt);
 
-/// Bit k set: joint k + 1 is a branch joint of `chain` (see above).
+/// Bit k set: joint variable k + 1 turns a branch joint of `chain` (see above; on a coupled chain
+/// the variable a branch DH row follows).
 std::uint16_t branch_joints(const SerialChain& chain);
 
-/// The generic configuration label of `q_rad` [rad] on `chain` (any family).
+/// The generic configuration label of `q_rad` [rad] on `chain` (any family): the sign of
+/// sin(theta) of each branch row, labelled by the joint variable it follows.
 ConfigurationLabel generic_configuration(const SerialChain& chain, const JointRef& q_rad);
 
 }  // namespace vrreg::kinematics

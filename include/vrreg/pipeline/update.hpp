@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "vrreg/core/measurement.hpp"
+#include "vrreg/pipeline/check.hpp"
 #include "vrreg/pipeline/model.hpp"
 
 namespace vrreg {
@@ -27,6 +28,14 @@ struct UpdateOptions {
   CellChange change = CellChange::kBump;
   std::string parent{};  ///< the model's name for the lineage (its file)
   std::string time{};    ///< when the points were read, for the lineage (ISO 8601)
+  /// Update even when nothing changed. Otherwise an update whose monitor rows, checked again
+  /// (check_cell with `check`), show no change (valid, or only noisier today), or, without monitor
+  /// rows to check, whose `last_verdict` was valid, is refused: it would fit the day's noise into
+  /// the model.
+  bool even_if_unchanged = false;
+  /// The verdict of this model's last check (its history), when known.
+  std::optional<MonitorVerdict> last_verdict{};
+  CheckOptions check{};  ///< how today's monitor rows are checked again
 };
 
 /// The updated model and the fit that made it.
@@ -41,6 +50,8 @@ struct UpdateResult {
   /// Drift: the fitted change of a fiducial's reading, d(p) = A p + b for its commanded robot
   /// position p [m]: columns A then b (registration sensor frame).
   Eigen::Matrix<double, 3, 4> drift{Eigen::Matrix<double, 3, 4>::Zero()};
+  /// Today's monitor rows checked again, when there were any and their sd could be estimated.
+  std::optional<CheckResult> today_check{};
 };
 
 /// Updates `model` from `today`: its monitor rows (paired with the model's by (point, config)) and
@@ -50,8 +61,8 @@ struct UpdateResult {
 /// Drift: an affine change in the robot position fitted to the same pairs (4 or more points, not
 /// coplanar), added to every fiducial's and monitor's reading, then registered again (Eq. 2, 6)
 /// and the corrector fitted again with the model's interpolation. Throws InputError naming
-/// today's file on too few or degenerate points, an unknown point, or (drift) a model built with a
-/// Procedure 2 strategy or a marker offset.
+/// today's file on too few or degenerate points, an unknown point, (drift) a model built with a
+/// Procedure 2 strategy or a marker offset, or no change found (UpdateOptions::even_if_unchanged).
 UpdateResult update_model(const RegistrationModel& model, const MeasurementSet& today,
                           const UpdateOptions& options);
 

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "vrreg/kinematics/serial_chain.hpp"
+#include "vrreg/robot_io/urdf_robot.hpp"
 
 namespace vrreg::io {
 
@@ -24,17 +25,22 @@ enum class RobotFileSyntax { kAuto, kJson, kYaml };
 // relative to the robot file; name, family, tool and base as above, on top of the URDF's).
 
 /// Reads the robot file at `path`: URDF if it ends in .urdf or starts with '<' (its chain from
-/// the root to the deepest leaf, urdf_robot.hpp), YAML if it ends in .yaml/.yml, JSON if .json,
-/// else sniffed.
-/// Throws FileError naming the file (and the line, where the syntax gives one).
-kinematics::SerialChain read_robot_file(const std::string& path);
+/// `links` base to tip, by default the root to the deepest leaf, urdf_robot.hpp), YAML if it ends
+/// in .yaml/.yml, JSON if .json, else sniffed. Links apply to a URDF or a robot file that names
+/// one (where they must agree with the file's base_link and tip_link); given for a DH table, they
+/// are an error. Throws FileError naming the file (and the line, where the syntax gives one).
+kinematics::SerialChain read_robot_file(const std::string& path,
+                                        const UrdfChainOptions& links = {});
 
 /// Parses robot-file `text`; `source` names it in messages and is the default robot name.
 kinematics::SerialChain parse_robot_file(const std::string& text, const std::string& source,
-                                         RobotFileSyntax syntax = RobotFileSyntax::kAuto);
+                                         RobotFileSyntax syntax = RobotFileSyntax::kAuto,
+                                         const UrdfChainOptions& links = {});
 
-/// A built-in robot (ur3, ur5, ur10, ur5e, lwr4) by name, else the robot file at that path.
-/// Throws InputError for an unknown name that is not a file, FileError for a bad file.
-kinematics::SerialChain load_robot(const std::string& name_or_path);
+/// A built-in robot (ur3, ur5, ur10, ur5e, lwr4) by name, else the robot file at that path (with
+/// `links` as in read_robot_file). Throws InputError for an unknown name that is not a file or
+/// for links given with a built-in name, FileError for a bad file.
+kinematics::SerialChain load_robot(const std::string& name_or_path,
+                                   const UrdfChainOptions& links = {});
 
 }  // namespace vrreg::io

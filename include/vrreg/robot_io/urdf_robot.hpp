@@ -3,7 +3,12 @@
 // Robots from URDF (urdfdom): the chain of joints from a base link to a tip link, as the DH chain
 // every kinematics function works on (kinematics/joint_chain.hpp). Revolute, continuous (as
 // revolute within +-360 deg) and prismatic joints move; fixed joints are folded into the next
-// joint's origin or into the tool; floating, planar and mimic joints on the chain are errors.
+// joint's origin or into the tool; floating and planar joints on the chain are errors.
+// A mimic joint (<mimic joint="S" multiplier="m" offset="o"/>) moves as q = m q_S + o: the
+// chain's joint variables are its joints that mimic none plus each S that joints on the chain
+// mimic, also from off the chain (a side branch: S gives its variable, not its transform), at the
+// place of its first follower (SerialChain::couplings). A mimic of a mimic, a cycle, a missing or
+// fixed S, and a zero or non-finite multiplier are errors naming the file and the joint.
 #include <string>
 
 #include "vrreg/kinematics/serial_chain.hpp"
@@ -18,6 +23,9 @@ struct UrdfChainOptions {
   /// Link the TCP is on; empty: the leaf reached through the most moving joints (an error when
   /// several are).
   std::string tip_link{};
+  /// The links are defaults (e.g. those a saved model's robot was taken between): a robot file
+  /// that names its own links keeps them, and a robot that is no URDF ignores them.
+  bool defaults_only = false;
 };
 
 /// Reads the URDF file at `path`; throws FileError naming it.
