@@ -7,7 +7,8 @@
 # wrapping scipy's RBFInterpolator (python/benchmarks/serve_peer.py). Every line-protocol reply of
 # vrreg is checked against `vrreg correct`'s CSV (wrong = 0), but for the poses (checked against
 # vrreg::correct in tests/serve/serve_orientation_test.cpp). Last, one robot client's latency while
-# two clients send 10 000-point HTTP batches.
+# two clients send 10 000-point HTTP batches. The service writes its audit log (one line per
+# correction) throughout, as a plant runs it.
 #   scripts/bench-serve.sh [SECONDS_PER_RUN]        (default 5; needs the release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -57,7 +58,8 @@ port_of() {  # LOG PATTERN
   echo "bench-serve: no $2 port in $1" >&2; exit 1
 }
 "$vrreg" serve --model "lattice=$work/lattice.json" --model "a1k=$work/a1-kriging.json" \
-  --model "a1g=$work/a1-grid.json" --listen 127.0.0.1:0 --http 127.0.0.1:0 2> "$work/serve.log" &
+  --model "a1g=$work/a1-grid.json" --listen 127.0.0.1:0 --http 127.0.0.1:0 \
+  --audit-log "$work/audit.jsonl" 2> "$work/serve.log" &
 pids+=($!)
 line=$(port_of "$work/serve.log" "line protocol")
 http=$(port_of "$work/serve.log" "HTTP")

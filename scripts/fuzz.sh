@@ -17,7 +17,8 @@ if ! [[ $seconds =~ ^[0-9]+$ ]] || ((seconds < 1)); then
   echo "fuzz.sh: SECONDS_PER_HARNESS must be a whole number >= 1, got '$seconds'" >&2
   exit 2
 fi
-all=(measurement_csv model_json robot_file error_model plan_csv parts_csv urdf serve_line serve_http)
+all=(measurement_csv model_json robot_file error_model plan_csv parts_csv urdf serve_line serve_http
+  serve_line_handler serve_http_handler)
 harnesses=("$@")
 ((${#harnesses[@]})) || harnesses=("${all[@]}")
 if ! command -v clang++ >/dev/null 2>&1; then

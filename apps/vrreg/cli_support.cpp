@@ -40,9 +40,10 @@ void InterpolationFlags::add_corrector_flags_to(CLI::App& command) {
                    "kriging and rbf: correct with the field model itself, not its table (which "
                    "the model file holds, within 1/20 of the noise of it); slower");
   command.add_flag("--extrapolate", extrapolate,
-                   "kriging, rbf, joint: correct targets outside the fiducials' support too "
-                   "(status 'extrapolated': the correction at the support's nearest point, its sd "
-                   "widened for the distance); without it they are left uncorrected");
+                   "correct targets outside the method's support (grid, hull, fiducials' box, "
+                   "joint ranges) too (status 'extrapolated': the correction at the support's "
+                   "nearest point and half the field's trend from there, its sd widened for the "
+                   "distance; docs/uncertainty.md); without it they are left uncorrected");
 }
 
 InterpolationChoice InterpolationFlags::choice() const {

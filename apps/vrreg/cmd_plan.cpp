@@ -42,6 +42,55 @@ std::string lower(std::string text) {
   return text;
 }
 
+// --approach-from: "+" or "-" for every joint, or one sign per joint ("+,+,-,+,+,+").
+planning::ApproachOptions approach_options(const PlanArgs& args,
+                                           const kinematics::SerialChain& chain) {
+  planning::ApproachOptions approach;
+  std::vector<double> signs;
+  std::string text = args.approach_from;
+  text.erase(std::remove(text.begin(), text.end(), ' '), text.end());
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    VRREG_THROW_UNLESS(item == "+" || item == "-",
+                       "--approach-from: '" << args.approach_from
+                                            << "': give + or - for every joint, or one per joint "
+                                               "separated by commas (e.g. +,+,-,+,+,+)");
+    signs.push_back(item == "+" ? 1.0 : -1.0);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  const int n = chain.n_joints();
+  if (signs.size() == 1) signs.assign(static_cast<std::size_t>(n), signs.front());
+  VRREG_THROW_UNLESS(static_cast<int>(signs.size()) == n,
+                     "--approach-from: robot '" << chain.name() << "' has " << n << " joints, got "
+                                                << signs.size() << " directions");
+  approach.direction = Eigen::Map<const Eigen::VectorXd>(signs.data(), n);
+  approach.offset_rad = units::deg_to_rad(args.approach_offset_deg);
+  approach.validate(chain);
+  return approach;
+}
+
+// Via points before every location (offset poses and monitor points too); a location too near a
+// joint limit for its via point names its part point's line.
+void add_vias(const PlanArgs& args, const PlanSetup& setup,
+              const std::vector<io::PartRecord>& records, planning::PlanResult& plan) {
+  try {
+    planning::add_approach_vias(setup.chain, plan, setup.options.approach);
+  } catch (const InputError& e) {
+    for (const planning::PlannedLocation& l : plan.locations) {
+      if (l.via_q_rad || l.part < 0 || static_cast<std::size_t>(l.part) >= records.size()) {
+        continue;
+      }
+      throw io::FileError(args.parts, records[static_cast<std::size_t>(l.part)].line,
+                          std::string("plan: ") + e.what());
+    }
+    throw;
+  }
+}
+
 // The robot, the planning options and where their defaults came from.
 PlanSetup make_setup(const PlanArgs& args) {
   PlanSetup s{robot_from_args(args.robot, args.tool_mm, args.links.links()), {}, {}, {}};
@@ -109,6 +158,7 @@ PlanSetup make_setup(const PlanArgs& args) {
     o.arm.home_q_rad = testbed->home_q_rad;
     s.notes.push_back("home joints: the simulated " + name + " test bed's");
   }
+  if (!args.approach_from.empty()) o.approach = approach_options(args, s.chain);
   return s;
 }
 
@@ -155,7 +205,10 @@ void run_plan_unchecked(const PlanArgs& args) {
   } catch (const InputError& e) {
     throw InputError(std::string(e.what()) + " (--force plans anyway)");
   }
-  planning::PlanResult plan = planning::make_plan(setup.chain, setup.parts, setup.options);
+  // Via points come last, once every location (offset poses, monitor points) is in the plan.
+  planning::PlanOptions without_vias = setup.options;
+  without_vias.approach = {};
+  planning::PlanResult plan = planning::make_plan(setup.chain, setup.parts, without_vias);
   if (!plan.ok()) {
     // The line of the first part point that (or one of whose fiducials) cannot be reached.
     const int part = plan.unreachable.empty() ? -1 : plan.unreachable.front().part;
@@ -175,6 +228,7 @@ void run_plan_unchecked(const PlanArgs& args) {
         " unreachable, left out); register with --estimate-marker-offset");
   }
   if (args.monitor > 0) add_monitor_notes(args, plan, setup);
+  if (setup.options.approach.enabled()) add_vias(args, setup, records, plan);
   VRREG_THROW_UNLESS(args.monitor_program.empty() || args.monitor > 0,
                      "--monitor-program needs --monitor");
   // Every output is made before any is written, then all are written or none.
@@ -265,6 +319,17 @@ void add_plan_command(CLI::App& app) {
                   "averages over visits)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
+  not_a_file(*cmd, cmd->add_option("--approach-from", args->approach_from,
+                                   "make every joint arrive at every location from one side "
+                                   "(against lost motion): + or - for all joints, or one per "
+                                   "joint (+,+,-,+,+,+); a via point before each location, "
+                                   "--approach-offset-deg away in joint space (docs/"
+                                   "joint-space-model.md, Lost motion)"));
+  cmd->add_option("--approach-offset-deg", args->approach_offset_deg,
+                  "with --approach-from: the via points' offset per joint in deg")
+      ->capture_default_str()
+      ->needs("--approach-from")
+      ->check(CLI::Range(0.01, 30.0));
   add_program_options(*cmd, *args);
   add_output_option(*cmd, "-o,--output", args->output, "write the plan CSV here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the summary");
@@ -272,6 +337,8 @@ void add_plan_command(CLI::App& app) {
 }
 
 }  // namespace
+
+PlanSetup make_plan_setup(const PlanArgs& args) { return make_setup(args); }
 
 VRREG_REGISTER_COMMAND(50, add_plan_command);
 

@@ -66,6 +66,10 @@ simulation::SimulatedDataset simulate_plan_file(const simulation::Testbed& testb
     c.config = row.config;
     c.q_rad = Eigen::Map<const Eigen::VectorXd>(row.q_rad.data(),
                                                 static_cast<Eigen::Index>(row.q_rad.size()));
+    if (row.via) {
+      c.via_q_rad = Eigen::Map<const Eigen::VectorXd>(
+          row.via->q_rad.data(), static_cast<Eigen::Index>(row.via->q_rad.size()));
+    }
     commanded.push_back(std::move(c));
   }
   if (commanded.empty()) throw io::FileError(path, 0, "the plan has no " + only + " rows");

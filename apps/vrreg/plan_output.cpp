@@ -10,6 +10,8 @@
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/result_json.hpp"
 #include "vrreg/kinematics/pose.hpp"
+#include "vrreg/planning/approach.hpp"
+#include "vrreg/planning/robot_program.hpp"
 
 namespace vrreg::cli {
 namespace {
@@ -46,6 +48,39 @@ std::map<int, std::string> config_labels(const planning::PlanResult& plan) {
   return labels;
 }
 
+// "+ + - + + +": each joint's approach direction.
+std::string approach_text(const planning::ApproachOptions& approach) {
+  std::string out;
+  for (Eigen::Index j = 0; j < approach.direction.size(); ++j) {
+    out += (j > 0 ? " " : "") + std::string(approach.direction(j) > 0 ? "+" : "-");
+  }
+  return out;
+}
+
+planning::ApproachCost approach_cost(const PlanArgs& args, const planning::PlanResult& plan) {
+  planning::ProgramOptions program;
+  if (args.repeats > 0) program.repeats = args.repeats;
+  return planning::approach_cost(plan, program);
+}
+
+// One line: the approach directions and what the via points cost.
+std::string approach_line(const PlanArgs& args, const PlanSetup& setup,
+                          const planning::PlanResult& plan) {
+  const planning::ApproachOptions& a = setup.options.approach;
+  const planning::ApproachCost c = approach_cost(args, plan);
+  const planning::ProgramOptions program;
+  return "every joint arrives from " + approach_text(a) + " (joints 1.." +
+         std::to_string(a.direction.size()) + "): a via point " +
+         fixed(units::rad_to_deg(a.offset_rad), 3) + " deg before each of " +
+         std::to_string(c.n_via) + " locations; joint path (farthest joint per move) " +
+         fixed(units::rad_to_deg(c.joint_path_rad), 1) + " -> " +
+         fixed(units::rad_to_deg(c.joint_path_with_vias_rad), 1) + " deg, movej time " +
+         fixed(c.motion_s, 1) + " -> " + fixed(c.motion_with_vias_s, 1) + " s (+" +
+         fixed(c.motion_with_vias_s - c.motion_s, 1) + " s at v " +
+         fixed(program.joint_speed_rad_s, 2) + " rad/s, a " + fixed(program.joint_accel_rad_s2, 2) +
+         " rad/s^2)";
+}
+
 std::string psi_text(const PlanSetup& setup) {
   return setup.chain.family() == kinematics::ChainFamily::kLwr
              ? fixed(units::rad_to_deg(setup.options.arm.psi_rad), 3)
@@ -65,6 +100,10 @@ std::vector<io::PlanRow> plan_rows(const planning::PlanResult& plan) {
     r.robot_m = l.robot_m;
     r.config = l.config.index();
     r.q_rad.assign(l.q_rad.data(), l.q_rad.data() + l.q_rad.size());
+    if (l.via_q_rad) {
+      r.via = io::PlanVia{l.via_robot_m, {l.via_q_rad->data(),
+                                          l.via_q_rad->data() + l.via_q_rad->size()}};
+    }
   }
   return rows;
 }
@@ -106,6 +145,12 @@ std::vector<std::string> plan_comments(const PlanArgs& args, const PlanSetup& se
   out.push_back("travel_mm: inside cubes " + format_mm(plan.within_cubes_m, 1) +
                 ", between cubes " + format_mm(plan.between_cubes_m, 1) +
                 " (input order: " + format_mm(plan.naive_between_cubes_m, 1) + ")");
+  if (o.approach.enabled()) {
+    out.push_back("approach: " + approach_line(args, setup, plan));
+    out.push_back(
+        "via rows: moved to just before the next row (same point), never measured; drop them "
+        "to make a measurement CSV");
+  }
   out.push_back(
       "rows: visiting order; add sensor_x_mm,sensor_y_mm,sensor_z_mm (and drop part) "
       "to make a measurement CSV");
@@ -170,6 +215,23 @@ nlohmann::json plan_json(const PlanArgs& args, const PlanSetup& setup,
                         plan.parts[static_cast<std::size_t>(b)].name});
   }
   j["overlapping"] = overlaps;
+  if (o.approach.enabled()) {
+    const planning::ApproachCost cost = approach_cost(args, plan);
+    const planning::ProgramOptions program;
+    nlohmann::json signs = nlohmann::json::array();
+    for (Eigen::Index k = 0; k < o.approach.direction.size(); ++k) {
+      signs.push_back(static_cast<int>(o.approach.direction(k)));
+    }
+    j["approach"] = {{"direction", signs},
+                     {"offset_deg", units::rad_to_deg(o.approach.offset_rad)},
+                     {"n_via", cost.n_via},
+                     {"joint_path_deg", units::rad_to_deg(cost.joint_path_rad)},
+                     {"joint_path_with_vias_deg", units::rad_to_deg(cost.joint_path_with_vias_rad)},
+                     {"motion_s", cost.motion_s},
+                     {"motion_with_vias_s", cost.motion_with_vias_s},
+                     {"joint_speed_rad_s", program.joint_speed_rad_s},
+                     {"joint_accel_rad_s2", program.joint_accel_rad_s2}};
+  }
   j["notes"] = setup.notes;
   j["output"] = args.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(args.output);
   return j;
@@ -223,6 +285,9 @@ void print_plan_summary(const PlanArgs& args, const PlanSetup& setup,
       "  travel                %s mm inside cubes, %s mm between cubes (input order: %s mm)\n",
       format_mm(plan.within_cubes_m, 1).c_str(), format_mm(plan.between_cubes_m, 1).c_str(),
       format_mm(plan.naive_between_cubes_m, 1).c_str());
+  if (o.approach.enabled()) {
+    std::printf("  approach              %s\n", approach_line(args, setup, plan).c_str());
+  }
   for (const auto& [a, b] : plan.overlapping) {
     std::printf("  note: the cubes of %s and %s overlap or touch\n",
                 plan.parts[static_cast<std::size_t>(a)].name.c_str(),

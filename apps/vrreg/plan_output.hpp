@@ -34,6 +34,8 @@ struct PlanArgs {
   int monitor = 0;                        ///< monitor points to add (0: none)
   int monitor_visits = 12;                ///< visits of each monitor point per reading
   std::string monitor_program;            ///< the check's program (monitor points only)
+  std::string approach_from;  ///< "+", "-" or one sign per joint: via points before every location
+  double approach_offset_deg = 2.0;  ///< the via points' offset per joint
   std::string output;
   bool json = false;
 };
@@ -45,6 +47,10 @@ struct PlanSetup {
   planning::PlanOptions options;
   std::vector<std::string> notes;  ///< e.g. "tool orientation: the simulated ur5 test bed's"
 };
+
+/// The robot (tool offset defaulted from the test bed) and the planning options of `args`, with
+/// notes on where the defaults came from; the part points are left empty.
+PlanSetup make_plan_setup(const PlanArgs& args);
 
 /// Plan locations as plan CSV rows (visiting order).
 std::vector<io::PlanRow> plan_rows(const planning::PlanResult& plan);

@@ -40,7 +40,7 @@ std::string plan_program(const PlanArgs& args, const planning::PlanResult& plan,
   if (!monitors_only) {
     for (const planning::PlannedLocation& l : plan.locations) {
       if (l.role != Role::kMonitor)
-        locations.push_back({l.point, l.role, l.config.to_string(), l.q_rad});
+        locations.push_back({l.point, l.role, l.config.to_string(), l.q_rad, -1, l.via_q_rad});
     }
   }
   // Monitor points last, in rounds: at registration as at every check.

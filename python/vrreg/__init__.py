@@ -18,6 +18,7 @@ from ._vrreg import (
     Measurements,
     Model,
     Plan,
+    PlanNext,
     RegisterResult,
     RHO_THRESHOLD,
     Simulation,
@@ -33,6 +34,7 @@ from ._vrreg import (
     load_model,
     model_from_json,
     plan,
+    plan_next,
     read_measurements,
     register,
     rho,
@@ -55,8 +57,8 @@ def reproduce(seed: int = 1, *, ur5: bool = True, lwr4: bool = True) -> dict:
 
 __all__ = [
     "__version__", "CheckResult", "Client", "Correction", "CorrectResult", "EvaluateResult", "FileError", "InputError", "Measurements", "Model",
-    "Plan", "RegisterResult", "RHO_THRESHOLD", "Simulation", "StencilStatus", "correct",
+    "Plan", "PlanNext", "RegisterResult", "RHO_THRESHOLD", "Simulation", "StencilStatus", "correct",
     "estimate_marker_offset", "evaluate", "fk", "ik", "improvement", "load_model", "model_from_json", "plan",
-    "read_measurements", "register", "reproduce", "rho", "rigid_body_statistics", "robots",
+    "plan_next", "read_measurements", "register", "reproduce", "rho", "rigid_body_statistics", "robots",
     "ServiceError", "sigma_noise", "simulate", "UpdateResult", "check", "update",
 ]

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/core/measurement.hpp"
 
+#include "vrreg/core/check.hpp"
+
 namespace vrreg {
 
 const char* to_string(Role role) {
@@ -13,6 +15,19 @@ const char* to_string(Role role) {
       return "monitor";
   }
   return "fiducial";
+}
+
+void update_approach_sign(const Eigen::Ref<const Eigen::VectorXd>& q_from_rad,
+                          const Eigen::Ref<const Eigen::VectorXd>& q_to_rad,
+                          Eigen::Ref<Eigen::VectorXd> sign_out) {
+  VRREG_THROW_UNLESS(q_from_rad.size() == q_to_rad.size() && sign_out.size() == q_to_rad.size(),
+                     "approach sign: " << q_from_rad.size() << " from-joints, " << q_to_rad.size()
+                                       << " joints, " << sign_out.size() << " signs");
+  for (Eigen::Index j = 0; j < q_to_rad.size(); ++j) {
+    const double move_rad = q_to_rad(j) - q_from_rad(j);
+    if (move_rad > 0.0) sign_out(j) = 1.0;
+    if (move_rad < 0.0) sign_out(j) = -1.0;
+  }
 }
 
 std::vector<std::size_t> MeasurementSet::select(Role role, std::optional<int> config) const {

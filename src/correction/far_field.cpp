@@ -22,6 +22,10 @@ constexpr std::size_t kAnchorNeighbours = 8;
 // inside tells them apart (file comment), so even; the answer holds half the trend's change and
 // the sd the mixture's w (1 - w) of its square.
 constexpr double kTrendWeight = 0.5;
+// The absorbed rotation's growth, in units of the field's mean squared rate |G|_F^2 / 3 times the
+// curl share. Calibrated on the far-field cells (seeds 1-5, docs/uncertainty.md): with 1 a
+// tracker's warp gave RMS of TRE/sd up to 1.61 at 100 lattice sizes; with 1.25, 1.4.
+constexpr double kAbsorbedTiltShare = 1.25;
 // Where the point's joints left the fiducials' ranges (the joint model: the arm moved joints the
 // fiducials never did), the field changes another way at its mean rate |G|_F / sqrt(3) times
 // sqrt of this. A UR5 plan asked about a cell turned 90 degrees about the base
@@ -196,7 +200,8 @@ double FarField::extrapolated_sd_m(double sd_anchor_m, double moved_m, const Eig
   // The field stops: the registration's rotation, which absorbed the antisymmetric part of its
   // gradient, keeps turning the mapping (as much as the corrections' curl shows), and joints the
   // fiducials never moved change it further.
-  const double share = curl_share_ + (joints_clamped ? kClampedJointsShare : 0.0);
+  const double share =
+      kAbsorbedTiltShare * curl_share_ + (joints_clamped ? kClampedJointsShare : 0.0);
   const double other_way_sq_m2 = share * rate_sq * step_m.squaredNorm();
   // Between neighbours it changes by up to its spread over the distance (a joint clamped, a move
   // without a length: the whole spread).

@@ -123,7 +123,7 @@ JointGaps::Answer JointGaps::at(const kinematics::JointRef& q_rad) const {
       const double share = std::min(1.0, d * lever_m_(i) / spacing_m_);
       sum_sq_m2 += error_m * error_m * share * share;
     } else if (d * lever_m_(i) > kNearMeasuredSpacings * spacing_m_) {
-      out.unmeasured = true;
+      out.unmeasured_m = std::max(out.unmeasured_m, d * lever_m_(i));
     }
   }
   out.sd_m = std::sqrt(sum_sq_m2);

@@ -48,8 +48,10 @@ class JointGaps {
   [[nodiscard]] bool judges() const;
 
   struct Answer {
-    double sd_m = 0.0;        ///< what the point's gaps add to its sd [m]
-    bool unmeasured = false;  ///< in a wide gap nothing measured, away from its ends
+    double sd_m = 0.0;  ///< what the point's gaps add to its sd [m]
+    /// In a wide gap nothing measured, away from its ends: the marker's motion from the nearest
+    /// measured value [m] (the largest over the joints); 0 otherwise.
+    double unmeasured_m = 0.0;
   };
   /// The gaps' answer at commanded joints `q_rad`.
   [[nodiscard]] Answer at(const kinematics::JointRef& q_rad) const;

@@ -97,7 +97,7 @@ class JointMethod final : public FittedMethod {
                     (query.joints_rad.col(i).array() <= q_hi_rad_.array()).all();
       if (inside && gaps_.judges()) {
         const JointGaps::Answer gap = gaps_.at(query.joints_rad.col(i));
-        inside = !gap.unmeasured;
+        inside = gap.unmeasured_m == 0.0;
         if (out.gap_sd_m.size() > 0) out.gap_sd_m(i) = gap.sd_m;
       }
       if (inside) {
@@ -110,16 +110,19 @@ class JointMethod final : public FittedMethod {
   }
 
   // The joint model reads the joints: a target whose joints leave the range seen in the
-  // fiducials, or lie in a gap of it nothing measured, moved by an angle, not a length
-  // (infinity: the widest sd).
+  // fiducials moved by an angle, not a length (infinity: the widest sd); one in a gap nothing
+  // measured, by the marker's motion from the nearest measured value.
   [[nodiscard]] std::optional<Eigen::VectorXd> clamp_to_support(
       Points3& registered_robot_m, Eigen::MatrixXd& joints_rad) const override {
     Eigen::VectorXd moved_m = support_.clamp(registered_robot_m);
     for (Eigen::Index i = 0; i < joints_rad.cols(); ++i) {
       const Eigen::VectorXd q = joints_rad.col(i);
       joints_rad.col(i) = q.cwiseMax(q_lo_rad_).cwiseMin(q_hi_rad_);
-      if (joints_rad.col(i) != q || (gaps_.judges() && gaps_.at(q).unmeasured))
+      if (joints_rad.col(i) != q) {
         moved_m(i) = std::numeric_limits<double>::infinity();
+      } else if (gaps_.judges()) {
+        moved_m(i) = std::max(moved_m(i), gaps_.at(q).unmeasured_m);
+      }
     }
     return moved_m;
   }

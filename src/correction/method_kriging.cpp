@@ -16,6 +16,7 @@
 #include "base_cylinder.hpp"
 #include "method_support.hpp"
 #include "vrreg/correction/kriging.hpp"
+#include "vrreg/correction/kriging_design.hpp"
 
 namespace vrreg::detail {
 namespace {
@@ -136,7 +137,7 @@ KrigingOptions options_for(const CorrectorData& data) {
   // A quadratic trend's 10 terms per axis want ~10 fiducials each; fewer leave it to
   // extrapolate wildly at the layout's edge (27 fiducials of A1: 0.92 mm with degree 2,
   // 0.27 mm with degree 0, octuplet RRBC 0.27 mm).
-  options.trend_degree = data.size() >= 100 ? 2 : data.size() >= 40 ? 1 : 0;
+  options.trend_degree = kriging_trend_degree_for(static_cast<Eigen::Index>(data.size()));
   // A large cell, whose local models use 150 neighbours, fits its hyperparameters on 300
   // fiducials instead of 500: the REML fit is O(n^3) per step and was 4.3 s of the 9.5 s (CPU)
   // register of 10^5 fiducials (docs/benchmarks.md, "Large cells").

@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -134,10 +135,10 @@ class ScatteredMethod final : public FittedMethod {
       // Registration needs three points off a line; interpolation in 3D needs a volume. A flat
       // layout is answered, every point uncorrected with the reason, not refused.
       std::ostringstream why;
-      why << "scattered: the " << data.size()
+      why << "none: the " << data.size()
           << " fiducials lie in a plane or on a line (RMS distance from their plane "
-          << units::m_to_mm(thickness_and_extent_m(data).first)
-          << " mm): no tetrahedron to interpolate in; every point is left uncorrected";
+          << std::setprecision(3) << units::m_to_mm(thickness_and_extent_m(data).first)
+          << " mm), no tetrahedron to interpolate in; every point is left uncorrected";
       flat_ = why.str();
     } else if (data.size() > kLargeCellFiducials) {
       local_.emplace(data.fiducials_robot_m, settings.match_tolerance_m);

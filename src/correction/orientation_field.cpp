@@ -480,7 +480,9 @@ OrientationCorrection OrientationCorrector::correct(
       if (is_corrected(s)) s = StencilStatus::kNotBetterThanNone;
     }
   }
-  if (predicts_sd()) {
+  // A stencil's tangent field has no sd inside its support, but one for the points it
+  // extrapolated (far_field.hpp): then the answer carries them, NaN elsewhere.
+  if (predicts_sd() || (own && own->predicted_sd_m.size() == n)) {
     out.predicted_sd_rad = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
   }
   for (Eigen::Index t = 0; t < n; ++t) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/experiments/simulated_measurements.hpp"
 
+#include <algorithm>
+
 #include "vrreg/core/rotation.hpp"
 
 namespace vrreg::experiments {
@@ -12,6 +14,29 @@ MeasurementSet to_measurement_set(const simulation::SimulatedDataset& data) {
   set.has_config = data.has_config;
   set.has_repeat = true;
   set.locations.resize(data.visits.size());
+  // With via points the simulation CSV names the joints each visit came from (from_q columns).
+  const bool with_from =
+      std::any_of(data.visits.begin(), data.visits.end(),
+                  [](const simulation::SimulatedVisit& v) { return v.via_q_rad.has_value(); });
+  set.approach = data.visits.empty() || data.visits.front().q_rad.size() == 0
+                     ? ApproachSource::kNone
+                 : with_from ? ApproachSource::kFromJoints
+                             : ApproachSource::kRowOrder;
+  // Approach directions along the visits, as the CSV reader takes them from the rows: the first
+  // visit's are unknown (a file does not say where the arm stood before).
+  Eigen::VectorXd sign;
+  for (std::size_t v = 0; v < data.visits.size(); ++v) {
+    const kinematics::JointVector& q = data.visits[v].q_rad;
+    if (v == 0 || with_from) sign = Eigen::VectorXd::Zero(q.size());
+    if (with_from) {
+      const kinematics::JointVector& via = data.visits[v].via_q_rad.value_or(
+          v > 0 ? data.visits[v - 1].q_rad : q);
+      update_approach_sign(via, q, sign);
+    } else if (v > 0) {
+      update_approach_sign(data.visits[v - 1].q_rad, q, sign);
+    }
+    set.locations[v].approach_sign.assign(sign.data(), sign.data() + sign.size());
+  }
   for (std::size_t v = 0; v < data.visits.size(); ++v) {
     const simulation::SimulatedVisit& visit = data.visits[v];
     const simulation::PlannedLocation& planned =

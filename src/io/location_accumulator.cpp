@@ -101,10 +101,16 @@ void LocationAccumulator::add(const MeasurementRow& row, std::size_t line) {
     location.has_robot = has_robot_;
     location.robot_m = row.robot_m;
     location.q_rad = row.q_rad;
+    location.approach_sign = row.approach_sign;
     location.q_robot_marker = row.q_robot_marker;
     location.source_line = line;
   } else {
     check_joints(locations_[index], row, line);
+    // Readings of one location that arrived from different sides leave that joint unknown.
+    std::vector<double>& sign = locations_[index].approach_sign;
+    for (std::size_t k = 0; k < sign.size() && k < row.approach_sign.size(); ++k) {
+      if (sign[k] != row.approach_sign[k]) sign[k] = 0.0;
+    }
   }
   // Welford: running mean and per-axis sum of squared deviations from it.
   Location& location = locations_[index];

@@ -35,6 +35,30 @@ std::int64_t bytes_left(std::istream& in) {
   return end < here ? 0 : static_cast<std::int64_t>(end - here);
 }
 
+// Per joint the sign of its last move before `row`: against from_q when the file gives it (0 for
+// a joint that did not move), else along the rows (a joint that did not move keeps its sign;
+// before the first row every sign is unknown, 0).
+void set_approach_sign(detail::MeasurementRow& row, std::vector<double>& previous_q_rad,
+                       Eigen::VectorXd& sign) {
+  row.approach_sign.clear();
+  if (row.q_rad.empty()) return;
+  const Eigen::Map<const Eigen::VectorXd> q(row.q_rad.data(),
+                                            static_cast<Eigen::Index>(row.q_rad.size()));
+  if (!row.from_q_rad.empty()) {
+    sign = Eigen::VectorXd::Zero(q.size());
+    update_approach_sign(Eigen::Map<const Eigen::VectorXd>(row.from_q_rad.data(), q.size()), q,
+                         sign);
+  } else {
+    if (sign.size() != q.size()) sign = Eigen::VectorXd::Zero(q.size());
+    if (!previous_q_rad.empty()) {
+      update_approach_sign(Eigen::Map<const Eigen::VectorXd>(previous_q_rad.data(), q.size()), q,
+                           sign);
+    }
+    previous_q_rad = row.q_rad;
+  }
+  row.approach_sign.assign(sign.data(), sign.data() + sign.size());
+}
+
 }  // namespace
 
 MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source_name,
@@ -46,6 +70,9 @@ MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source
   std::optional<detail::LocationAccumulator> accumulator;
   std::size_t header_line = 0;
   detail::MeasurementRow row;
+  // Approach directions (lost motion): from the from_q columns, or from the rows' order.
+  std::vector<double> previous_q_rad;
+  Eigen::VectorXd sign;
   // A file of 10^6 readings takes seconds: its bytes are the progress, reported per MiB.
   ProgressStage progress("reading " + std::filesystem::path(source_name).filename().string(),
                          bytes_left(in));
@@ -69,6 +96,7 @@ MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source
       continue;
     }
     detail::parse_measurement_row(fields, *columns, source_name, reader.line_number(), row);
+    set_approach_sign(row, previous_q_rad, sign);
     accumulator->add(row, reader.line_number());
   }
   if (!columns) {
@@ -87,6 +115,9 @@ MeasurementSet parse_measurement_csv(std::istream& in, const std::string& source
   set.has_config = columns->config != detail::MeasurementColumns::kAbsent;
   set.has_repeat = columns->repeat != detail::MeasurementColumns::kAbsent;
   set.has_visit = columns->visit != detail::MeasurementColumns::kAbsent;
+  set.approach = columns->joints.empty()         ? ApproachSource::kNone
+                 : !columns->from_joints.empty() ? ApproachSource::kFromJoints
+                                                 : ApproachSource::kRowOrder;
   return set;
 }
 

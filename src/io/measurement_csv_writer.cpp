@@ -88,6 +88,10 @@ std::string format_measurement_csv(const std::vector<Reading>& readings,
     VRREG_THROW_UNLESS(r.q_rad.size() == n_joints, "reading " << i << " has " << r.q_rad.size()
                                                               << " joint angles, reading 0 has "
                                                               << n_joints);
+    VRREG_THROW_UNLESS(r.from_q_rad.size() == first.from_q_rad.size() &&
+                           (r.from_q_rad.empty() || r.from_q_rad.size() == n_joints),
+                       "reading " << i << ": from_q given for some readings but not all, or not "
+                                     "one per joint");
   }
   std::string out;
   append_comments(out, comments);
@@ -96,6 +100,9 @@ std::string format_measurement_csv(const std::vector<Reading>& readings,
   out += ",sensor_x_mm,sensor_y_mm,sensor_z_mm";
   if (first.config) out += ",config";
   for (std::size_t k = 0; k < n_joints; ++k) out += ",q" + std::to_string(k + 1) + "_rad";
+  for (std::size_t k = 0; k < first.from_q_rad.size(); ++k) {
+    out += ",from_q" + std::to_string(k + 1) + "_rad";
+  }
   if (first.repeat) out += ",repeat";
   if (first.visit) out += ",visit";
   if (first.q_sensor_marker) out += ",sensor_qx,sensor_qy,sensor_qz,sensor_qw";
@@ -111,6 +118,11 @@ std::string format_measurement_csv(const std::vector<Reading>& readings,
     if (r.config) out += "," + std::to_string(*r.config);
     for (const double q : r.q_rad) {
       VRREG_THROW_UNLESS(std::isfinite(q), "reading " << i << ": non-finite joint angle");
+      out += ',';
+      out += detail::format_double(q);
+    }
+    for (const double q : r.from_q_rad) {
+      VRREG_THROW_UNLESS(std::isfinite(q), "reading " << i << ": non-finite from_q angle");
       out += ',';
       out += detail::format_double(q);
     }

@@ -16,7 +16,8 @@ constexpr int kMaxJoints = 64;
 constexpr const char* kAllowed =
     "allowed: point, role, robot_x_mm, robot_y_mm, robot_z_mm, sensor_x_mm, sensor_y_mm, "
     "sensor_z_mm (or all six with _m), config, q1_rad..qN_rad (or _deg), repeat, visit, sensor_qx, "
-    "sensor_qy, sensor_qz, sensor_qw, robot_qx, robot_qy, robot_qz, robot_qw";
+    "sensor_qy, sensor_qz, sensor_qw, robot_qx, robot_qy, robot_qz, robot_qw, from_q1_rad.."
+    "from_qN_rad (or _deg)";
 
 // "<frame>_qx".."<frame>_qw" (frame "sensor" or "robot"): an orientation quaternion
 // (unitless); index x,y,z,w = 0..3.
@@ -125,6 +126,25 @@ class HeaderParser {
         cols.robot_orientation[static_cast<std::size_t>(*component)] = index;
         continue;
       }
+      if (lower.starts_with("from_")) {  // the joints the robot came from (lost motion)
+        const auto [from_stem, from_unit] = split_suffix(lower.substr(5));
+        const auto joint = joint_stem(from_stem);
+        if (!joint) fail("unknown column '" + shown + "' (" + kAllowed + ")");
+        if (from_unit != "rad" && from_unit != "deg") {
+          fail("column '" + shown + "' needs the unit suffix _rad or _deg");
+        }
+        if (*joint < 1 || *joint > kMaxJoints) {
+          fail("column '" + shown + "': joint columns are from_q1..from_q" +
+               std::to_string(kMaxJoints));
+        }
+        claim("from_" + from_stem, index, cols);
+        check_unit(angle_column, angle_unit, name, from_unit, "angle");
+        if (static_cast<std::size_t>(*joint) > cols.from_joints.size()) {
+          cols.from_joints.resize(static_cast<std::size_t>(*joint), MeasurementColumns::kAbsent);
+        }
+        cols.from_joints[static_cast<std::size_t>(*joint - 1)] = index;
+        continue;
+      }
       const auto [stem, unit] = split_suffix(lower);
       if (const auto coordinate = coordinate_stem(stem)) {
         if (unit.empty()) fail("column '" + shown + "' has no unit suffix (_mm or _m)");
@@ -195,6 +215,15 @@ class HeaderParser {
         fail("joint columns must be q1..q" + std::to_string(cols.joints.size()) +
              " without gaps: " + "missing column 'q" + std::to_string(k + 1) + "_" + angle_unit +
              "'");
+      }
+    }
+    if (!cols.from_joints.empty() && cols.from_joints.size() != cols.joints.size()) {
+      fail("from_q columns need one per joint column: " + std::to_string(cols.from_joints.size()) +
+           " from_q, " + std::to_string(cols.joints.size()) + " q");
+    }
+    for (std::size_t k = 0; k < cols.from_joints.size(); ++k) {
+      if (cols.from_joints[k] == MeasurementColumns::kAbsent) {
+        fail("missing column 'from_q" + std::to_string(k + 1) + "_" + angle_unit + "'");
       }
     }
   }

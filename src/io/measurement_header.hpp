@@ -21,6 +21,7 @@ struct MeasurementColumns {
   int repeat = kAbsent;
   int visit = kAbsent;
   std::vector<int> joints;   ///< q1..qN
+  std::vector<int> from_joints;  ///< from_q1..from_qN (the joints the robot came from), or empty
   std::array<int, 4> orientation{kAbsent, kAbsent, kAbsent, kAbsent};  ///< sensor_qx..qw
   std::array<int, 4> robot_orientation{kAbsent, kAbsent, kAbsent, kAbsent};  ///< robot_qx..qw
   bool length_in_mm = true;  ///< _mm columns (else _m)

@@ -105,6 +105,11 @@ class RowParser {
       const double value = number(columns_.joints[k]);
       row.q_rad[k] = columns_.joints_in_degrees ? units::deg_to_rad(value) : value;
     }
+    row.from_q_rad.resize(columns_.from_joints.size());
+    for (std::size_t k = 0; k < columns_.from_joints.size(); ++k) {
+      const double value = number(columns_.from_joints[k]);
+      row.from_q_rad[k] = columns_.joints_in_degrees ? units::deg_to_rad(value) : value;
+    }
     row.q_sensor_marker.reset();
     if (columns_.has_orientation())
       row.q_sensor_marker = quaternion(columns_.orientation, "sensor");

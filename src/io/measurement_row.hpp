@@ -22,6 +22,8 @@ struct MeasurementRow {
   Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();
   std::optional<int> config;
   std::vector<double> q_rad;
+  std::vector<double> from_q_rad;     ///< the joints the robot came from, when the file has them
+  std::vector<double> approach_sign;  ///< per joint -1, 0, +1; set by the reader (Location)
   std::optional<int> repeat;
   std::optional<int> visit;
   std::optional<Eigen::Quaterniond> q_sensor_marker;  ///< normalised, when the file has it

@@ -27,17 +27,19 @@ std::string_view field(const std::vector<std::string_view>& fields, int column) 
   return fields[static_cast<std::size_t>(column)];
 }
 
+// `via` tells whether the row is a via point (role "via") rather than a location.
 PlanRow parse_row(const std::vector<std::string_view>& fields, const detail::PointColumns& cols,
-                  const std::string& source, std::size_t line) {
+                  const std::string& source, std::size_t line, bool& via) {
   detail::check_field_count(fields, cols, source, line);
   PlanRow row;
   row.line = line;
   row.point = detail::plan_label(detail::parse_point_label(field(fields, cols.point), source, line),
                                  "point", source, line);
   const std::string role = detail::to_lower(field(fields, cols.role));
-  if (role != "fiducial" && role != "target" && role != "monitor") {
+  via = role == "via";
+  if (role != "fiducial" && role != "target" && role != "monitor" && !via) {
     throw FileError(source, line,
-                    "role must be 'fiducial', 'target' or 'monitor', got '" +
+                    "role must be 'fiducial', 'target', 'monitor' or 'via', got '" +
                         detail::printable(field(fields, cols.role)) + "'");
   }
   row.role = role == "target"    ? Role::kTarget
@@ -79,6 +81,7 @@ PlanFile parse_plan_csv(std::istream& in, const std::string& source_name) {
   std::size_t header_line = 0;
   PlanFile plan;
   std::map<std::pair<std::string, int>, std::size_t> seen;
+  std::optional<PlanRow> pending_via;  // a via row waiting for its location's row
   while (reader.next(line)) {
     const std::string_view content = detail::trim(line);
     if (!content.empty() && content.front() == '#') {
@@ -100,7 +103,28 @@ PlanFile parse_plan_csv(std::istream& in, const std::string& source_name) {
       }
       continue;
     }
-    PlanRow row = parse_row(fields, *columns, source_name, at);
+    bool is_via = false;
+    PlanRow row = parse_row(fields, *columns, source_name, at, is_via);
+    if (is_via) {
+      if (pending_via) {
+        throw FileError(source_name, pending_via->line,
+                        "via row of '" + detail::printable(pending_via->point) +
+                            "' is not followed by its location (a via row comes just before "
+                            "the row with the same point)");
+      }
+      pending_via = std::move(row);
+      continue;
+    }
+    if (pending_via) {
+      if (pending_via->point != row.point || pending_via->config != row.config) {
+        throw FileError(source_name, pending_via->line,
+                        "via row of '" + detail::printable(pending_via->point) +
+                            "' is not followed by its location (a via row comes just before "
+                            "the row with the same point)");
+      }
+      row.via = PlanVia{pending_via->robot_m, std::move(pending_via->q_rad)};
+      pending_via.reset();
+    }
     const auto [it, inserted] = seen.emplace(std::pair{row.point, row.config.value_or(-1)}, at);
     if (!inserted) {
       throw FileError(source_name, at,
@@ -109,6 +133,11 @@ PlanFile parse_plan_csv(std::istream& in, const std::string& source_name) {
                           std::to_string(it->second) + ")");
     }
     plan.rows.push_back(std::move(row));
+  }
+  if (pending_via) {
+    throw FileError(source_name, pending_via->line,
+                    "via row of '" + detail::printable(pending_via->point) +
+                        "' is the last row: a via row comes just before its location's row");
   }
   if (!columns) {
     throw FileError(source_name, 0,

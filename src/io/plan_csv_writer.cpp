@@ -64,6 +64,18 @@ std::string format_plan_csv(const std::vector<PlanRow>& rows,
     VRREG_THROW_UNLESS(r.q_rad.size() == first.q_rad.size(),
                        "plan row " << i << " has " << r.q_rad.size() << " joint angles, row 0 has "
                                    << first.q_rad.size());
+    if (r.via) {  // its own row just before, same label: moved to, never measured
+      VRREG_THROW_UNLESS(r.via->q_rad.size() == first.q_rad.size(),
+                         "plan row " << i << ": its via point has " << r.via->q_rad.size()
+                                     << " joint angles, row 0 has " << first.q_rad.size());
+      out += r.point + ",via," + r.part;
+      for (int axis = 0; axis < 3; ++axis) {
+        append_number(out, units::m_to_mm(r.via->robot_m(axis)), i);
+      }
+      if (r.config) out += "," + std::to_string(*r.config);
+      for (const double q : r.via->q_rad) append_number(out, q, i);
+      out += '\n';
+    }
     out += r.point;
     out += ',';
     out += to_string(r.role);

@@ -87,7 +87,7 @@ std::vector<ProgramLocation> monitor_program_locations(const PlanResult& plan, i
   for (int v = 0; v < visits; ++v) {
     for (const PlannedLocation& l : plan.locations) {
       if (l.role != Role::kMonitor) continue;
-      out.push_back({l.point, l.role, l.config.to_string(), l.q_rad, v});
+      out.push_back({l.point, l.role, l.config.to_string(), l.q_rad, v, l.via_q_rad});
     }
   }
   return out;
@@ -103,10 +103,15 @@ ProgramDuration program_duration(const std::vector<ProgramLocation>& locations,
   for (std::size_t k = 1; k < locations.size(); ++k) {
     const kinematics::JointVector& from = locations[k - 1].q_rad;
     const kinematics::JointVector& to = locations[k].q_rad;
+    const kinematics::JointVector& via = locations[k].via_q_rad.value_or(to);
     VRREG_THROW_UNLESS(
-        from.size() == to.size() && from.allFinite() && to.allFinite(),
+        from.size() == to.size() && via.size() == to.size() && from.allFinite() &&
+            to.allFinite() && via.allFinite(),
         "program duration: location '" << locations[k].point << "' has no finite joints");
-    out.motion_s += move_time_s((to - from).cwiseAbs().maxCoeff(), options.joint_speed_rad_s,
+    // A via point is a move of its own (without a stop): from -> via -> to.
+    out.motion_s += move_time_s((via - from).cwiseAbs().maxCoeff(), options.joint_speed_rad_s,
+                                options.joint_accel_rad_s2) +
+                    move_time_s((to - via).cwiseAbs().maxCoeff(), options.joint_speed_rad_s,
                                 options.joint_accel_rad_s2);
   }
   out.settle_s = out.stops * options.settle_s;

@@ -134,6 +134,7 @@ void PlanOptions::validate(const kinematics::SerialChain& chain) const {
   VRREG_THROW_UNLESS(max_locations > 0, "plan: max_locations must be positive");
   (void)cube_geometry(halfwidth_m, spacing_m);
   arm.validate(chain);
+  approach.validate(chain);
 }
 
 PlanResult make_plan(const kinematics::SerialChain& chain, const std::vector<PartPoint>& parts,
@@ -225,6 +226,7 @@ PlanResult make_plan(const kinematics::SerialChain& chain, const std::vector<Par
       }
     }
   }
+  add_approach_vias(chain, result, options.approach);
   return result;
 }
 

@@ -38,6 +38,9 @@ void check_locations(const std::vector<ProgramLocation>& locations) {
   for (const ProgramLocation& l : locations) {
     VRREG_THROW_UNLESS(l.q_rad.size() == n && n > 0 && l.q_rad.allFinite(),
                        "robot program: location '" << l.point << "' has no finite joints");
+    VRREG_THROW_UNLESS(!l.via_q_rad || (l.via_q_rad->size() == n && l.via_q_rad->allFinite()),
+                       "robot program: the via point of location '" << l.point
+                                                                    << "' has no finite joints");
   }
 }
 
@@ -62,6 +65,13 @@ std::string urscript(const std::vector<ProgramLocation>& locations, const Progra
     s += fmt::format("  # {}/{} {} {}{}{}\n", k + 1, n, label, role_name(l.role),
                      l.config.empty() ? "" : " config " + printable(l.config), visit_text(l));
     s += fmt::format("  textmsg(\"vrreg {}/{} {}\")\n", k + 1, n, label);
+    if (l.via_q_rad) {
+      s += "  # via: every joint arrives from its approach direction\n  movej([";
+      for (Eigen::Index j = 0; j < 6; ++j) {
+        s += fmt::format("{}{:.12g}", j ? ", " : "", (*l.via_q_rad)(j));
+      }
+      s += fmt::format("], a={:.6g}, v={:.6g})\n", o.joint_accel_rad_s2, o.joint_speed_rad_s);
+    }
     s += "  movej([";
     for (Eigen::Index j = 0; j < 6; ++j) {
       s += fmt::format("{}{:.12g}", j ? ", " : "", l.q_rad(j));
@@ -103,6 +113,14 @@ std::string krl(const std::vector<ProgramLocation>& locations, const ProgramOpti
     const ProgramLocation& l = locations[k];
     s += fmt::format("  ; {}/{} {} {}{}{}\n", k + 1, n, printable(l.point), role_name(l.role),
                      l.config.empty() ? "" : " config " + printable(l.config), visit_text(l));
+    if (l.via_q_rad) {
+      s += "  ; via: every joint arrives from its approach direction\n  PTP {";
+      for (Eigen::Index j = 0; j < joints; ++j) {
+        s += fmt::format("{}{} {:.9f}", j ? ", " : "", axes[static_cast<std::size_t>(j)],
+                         deg((*l.via_q_rad)(j)));
+      }
+      s += "}\n";
+    }
     s += "  PTP {";
     for (Eigen::Index j = 0; j < joints; ++j) {
       s += fmt::format("{}{} {:.9f}", j ? ", " : "", axes[static_cast<std::size_t>(j)],
@@ -128,9 +146,19 @@ std::string joint_csv(const std::vector<ProgramLocation>& locations, const Progr
   const bool visits = std::any_of(locations.begin(), locations.end(),
                                   [](const ProgramLocation& l) { return l.visit >= 0; });
   s += visits ? ",visit\n" : "\n";
+  std::size_t order = 0;
   for (std::size_t k = 0; k < locations.size(); ++k) {
     const ProgramLocation& l = locations[k];
-    s += fmt::format("{},{},{},{}", k + 1, l.point, role_name(l.role), l.config);
+    if (l.via_q_rad) {  // moved to, never read: repeats 0
+      s += fmt::format("{},{},via,{}", ++order, l.point, l.config);
+      for (Eigen::Index j = 0; j < joints; ++j) s += fmt::format(",{:.17g}", (*l.via_q_rad)(j));
+      for (Eigen::Index j = 0; j < joints; ++j) {
+        s += fmt::format(",{:.12g}", deg((*l.via_q_rad)(j)));
+      }
+      s += ",0";
+      s += visits ? fmt::format(",{}\n", std::max(l.visit, 0)) : "\n";
+    }
+    s += fmt::format("{},{},{},{}", ++order, l.point, role_name(l.role), l.config);
     for (Eigen::Index j = 0; j < joints; ++j) s += fmt::format(",{:.17g}", l.q_rad(j));
     for (Eigen::Index j = 0; j < joints; ++j) s += fmt::format(",{:.12g}", deg(l.q_rad(j)));
     s += fmt::format(",{}", o.repeats);

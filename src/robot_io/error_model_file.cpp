@@ -126,7 +126,8 @@ void read_robot(const ErrorModelReader& reader, const json& root, std::size_t n_
       root, "", "robot",
       {"joint_offset_sigma_deg", "link_length_sigma_mm", "link_offset_sigma_mm", "twist_sigma_deg",
        "transmission_amplitude_arcmin", "transmission_period_deg", "repeatability_sigma_mm",
-       "compliance", "link_mass_kg", "joint_stiffness_nm_per_rad", "payload_kg"});
+       "compliance", "link_mass_kg", "joint_stiffness_nm_per_rad", "payload_kg",
+       "lost_motion_arcmin", "lost_motion_take_up"});
   if (robot == nullptr) return;
   const double deg = deg_to_rad(1.0);
   const double mm = mm_to_m(1.0);
@@ -144,6 +145,9 @@ void read_robot(const ErrorModelReader& reader, const json& root, std::size_t n_
   reader.numbers(*robot, "robot", "joint_stiffness_nm_per_rad", 1.0, n_joints,
                  r.joint_stiffness_nm_per_rad);
   reader.number(*robot, "robot", "payload_kg", 1.0, r.payload_kg);
+  reader.numbers(*robot, "robot", "lost_motion_arcmin", deg / kArcminPerDegree, n_joints,
+                 r.lost_motion_rad);
+  reader.number(*robot, "robot", "lost_motion_take_up", 1.0, r.lost_motion_take_up);
 }
 
 void read_tracker(const ErrorModelReader& reader, const json& root, simulation::TrackerModel& t) {
@@ -183,6 +187,10 @@ std::string format_error_model(const simulation::TestbedErrorModel& model,
   robot["link_mass_kg"] = list(r.link_mass_kg, 1.0);
   robot["joint_stiffness_nm_per_rad"] = list(r.joint_stiffness_nm_per_rad, 1.0);
   robot["payload_kg"] = human(r.payload_kg);
+  if (!r.lost_motion_rad.empty()) {  // a robot without lost motion writes what it always did
+    robot["lost_motion_arcmin"] = list(r.lost_motion_rad, rad_to_deg(1.0) * kArcminPerDegree);
+    robot["lost_motion_take_up"] = human(r.lost_motion_take_up);
+  }
   nlohmann::ordered_json tracker;
   tracker["distance_m"] = human(t.distance_m);
   tracker["azimuth_deg"] = human(rad_to_deg(t.azimuth_rad));

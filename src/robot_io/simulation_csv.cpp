@@ -35,6 +35,12 @@ void describe_errors(const simulation::TestbedErrorModel& errors, std::vector<st
   out.push_back("transmission error A sin(2 pi q / P + phi): A_arcmin " +
                 join(r.transmission_amplitude_rad, rad_to_deg(1.0) * 60.0, 6) + ", P_deg " +
                 join(r.transmission_period_rad, rad_to_deg(1.0), 6));
+  if (!r.lost_motion_rad.empty()) {
+    out.push_back("lost motion per joint, arcmin " +
+                  join(r.lost_motion_rad, rad_to_deg(1.0) * 60.0, 6) + ", take-up " +
+                  g(r.lost_motion_take_up) +
+                  ": each joint stops take-up * b / 2 short, against its last move (from home)");
+  }
   out.push_back("repeatability sigma " + g(m_to_mm(r.repeatability_sigma_m)) +
                 " mm per axis, drawn once per visit; compliance under gravity " +
                 (r.compliance
@@ -83,6 +89,12 @@ std::vector<Reading> simulated_readings(const simulation::SimulatedDataset& data
   const bool with_visit =
       std::any_of(data.visits.begin(), data.visits.end(),
                   [](const simulation::SimulatedVisit& v) { return v.round >= 0; });
+  // Via points (one approach direction per joint) are moves the rows do not show: then every row
+  // names the joints it came from (its via point, else the previous visit's), so that the reader
+  // takes the directions from them rather than from the rows' order.
+  const bool with_from =
+      std::any_of(data.visits.begin(), data.visits.end(),
+                  [](const simulation::SimulatedVisit& v) { return v.via_q_rad.has_value(); });
   std::vector<Reading> rows;
   rows.reserve(data.readings.size());
   for (const simulation::SimulatedReading& r : data.readings) {
@@ -96,6 +108,12 @@ std::vector<Reading> simulated_readings(const simulation::SimulatedDataset& data
     row.sensor_m = r.sensor_m;
     if (with_config) row.config = visit.config;
     row.q_rad.assign(visit.q_rad.data(), visit.q_rad.data() + visit.q_rad.size());
+    if (with_from) {
+      const auto v = static_cast<std::size_t>(r.visit);
+      const kinematics::JointVector& from =
+          visit.via_q_rad ? *visit.via_q_rad : data.visits[v > 0 ? v - 1 : 0].q_rad;
+      row.from_q_rad.assign(from.data(), from.data() + from.size());
+    }
     row.repeat = r.repeat;
     if (with_visit) row.visit = std::max(visit.round, 0);
     if (r.q_sensor_marker) {

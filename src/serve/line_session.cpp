@@ -53,9 +53,11 @@ static asio::awaitable<void> send(LineConnection& c, const std::string& reply, b
 
 LineOutcome handle_line(Service::Impl& service, std::string_view line, LineState& state,
                         const std::string& client) {
-  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-  // The bound is on the request, whichever line end the client sends.
-  if (line.size() > service.options.max_line_bytes) {
+  // The bound is on the request, whichever line end the client sends; the parser drops the one
+  // '\r' of a "\r\n" itself (dropping it here too would take "1\r\r\n" for "1").
+  std::string_view request_text = line;
+  if (!request_text.empty() && request_text.back() == '\r') request_text.remove_suffix(1);
+  if (request_text.size() > service.options.max_line_bytes) {
     service.refused_request(
         client, "line", ReplyCode::kLimit,
         "line over " + std::to_string(service.options.max_line_bytes) + " bytes");

@@ -138,12 +138,17 @@ void acquire_visits(const Testbed& testbed, SimulatedDataset& data) {
   const Eigen::Vector3d orientation_sigma_rad = orientation_noise_sigma_rad(tracker);
   const int k = tracker.readings_per_location;
   data.readings.reserve(data.visits.size() * static_cast<std::size_t>(k));
+  // The arm visits in the order of data.visits, starting from home: that path decides on which
+  // side of its play each joint arrives (lost motion).
+  JointApproach approach(testbed.home_q_rad);
   for (std::size_t v = 0; v < data.visits.size(); ++v) {
     SimulatedVisit& visit = data.visits[v];
-    visit.tcp_m = robot.visit_tcp_m(visit.q_rad, visit_rng);
+    if (visit.via_q_rad) (void)approach.move_to(*visit.via_q_rad);
+    const kinematics::JointVector& sign = approach.move_to(visit.q_rad);
+    visit.tcp_m = robot.visit_tcp_m(visit.q_rad, visit_rng, sign);
     if (rigid_body) {
       visit.R_commanded = kinematics::forward_kinematics(robot.nominal(), visit.q_rad).linear();
-      visit.R_true = robot.actual_rotation(visit.q_rad);
+      visit.R_true = robot.actual_rotation(visit.q_rad, sign);
       if (data.body_mount_rotation_rad) visit.R_true = visit.R_true * R_tool_body;
     }
     for (int r = 0; r < k; ++r) {

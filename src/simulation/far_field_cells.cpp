@@ -105,11 +105,25 @@ Points3 lattice_m(const FarFieldCellOptions& o, const Eigen::Vector3d& centre_m)
   return out;
 }
 
-// A target `distance` lattice sizes beyond the lattice's box in direction `u`: the box's
-// half-extent along u, then the distance.
+// A target `distance` lattice sizes from the lattice's box (of half-extent `size_m` / 2 about
+// `centre_m`) in direction `u`: the distance along u found by bisection.
 Eigen::Vector3d far_point_m(const Eigen::Vector3d& centre_m, double size_m, double distance,
                             const Eigen::Vector3d& u) {
-  return centre_m + (0.5 * size_m * u.cwiseAbs().maxCoeff() + distance * size_m) * u;
+  const double half_m = 0.5 * size_m;
+  const double wanted_m = distance * size_m;
+  const auto beyond_m = [&](double r) {
+    const Eigen::Vector3d p = r * u;
+    return (p - p.cwiseMax(Eigen::Vector3d::Constant(-half_m))
+                    .cwiseMin(Eigen::Vector3d::Constant(half_m)))
+        .norm();
+  };
+  double lo = 0.0;
+  double hi = std::sqrt(3.0) * half_m + wanted_m;  // beyond_m(hi) >= wanted_m
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (beyond_m(mid) < wanted_m ? lo : hi) = mid;
+  }
+  return centre_m + hi * u;
 }
 
 FarFieldCell tracker_cell(const FarFieldCellOptions& o) {

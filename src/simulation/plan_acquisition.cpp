@@ -18,6 +18,10 @@ void check_location(const Testbed& testbed, const CommandedLocation& c, bool wit
                                                             << " has " << n);
   VRREG_THROW_UNLESS(c.q_rad.allFinite() && c.robot_m.allFinite(),
                      "plan location '" << c.point << "' has non-finite joints or position");
+  VRREG_THROW_UNLESS(!c.via_q_rad || (c.via_q_rad->size() == n && c.via_q_rad->allFinite()),
+                     "plan location '" << c.point << "': its via point has non-finite joints or "
+                                       << (c.via_q_rad ? c.via_q_rad->size() : 0) << " of them; "
+                                       << testbed.name << " has " << n);
   VRREG_THROW_UNLESS(c.config.has_value() == with_config,
                      "plan location '" << c.point << "': a config on some locations only");
   const Eigen::Vector3d tcp =
@@ -63,12 +67,14 @@ SimulatedDataset simulate_plan(const Testbed& testbed, const std::vector<Command
     }
     data.visits.push_back(
         {static_cast<int>(n), c.config.value_or(0), c.q_rad, Eigen::Vector3d::Zero()});
+    data.visits.back().via_q_rad = c.via_q_rad;
   }
   // Monitor points last, in rounds: the arm leaves each and comes back (docs/monitoring.md).
   for (int round = 0; round < options.monitor_visits; ++round) {
     for (const int n : monitors) {
       const CommandedLocation& c = plan[static_cast<std::size_t>(n)];
       data.visits.push_back({n, c.config.value_or(0), c.q_rad, Eigen::Vector3d::Zero(), round});
+      data.visits.back().via_q_rad = c.via_q_rad;
     }
   }
   detail::acquire_visits(testbed, data);

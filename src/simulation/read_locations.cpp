@@ -15,6 +15,8 @@ std::vector<Location> read_locations(const SimulatedRobot& robot,
   const RigidTransform T_sensor_robot = T_robot_sensor.inverse();
   const int k = tracker.readings_per_location;
   std::vector<Location> out;
+  if (locations.empty()) return out;
+  JointApproach approach(locations.front().q_rad);  // lost motion: the path starts at the first
   for (int v = 0; v < visits; ++v) {
     for (const CommandedLocation& c : locations) {
       Location l;
@@ -24,7 +26,7 @@ std::vector<Location> read_locations(const SimulatedRobot& robot,
       if (visits > 1 || c.role == Role::kMonitor) l.visit = v;
       l.robot_m = c.robot_m;
       l.q_rad.assign(c.q_rad.data(), c.q_rad.data() + c.q_rad.size());
-      const Eigen::Vector3d tcp = robot.visit_tcp_m(c.q_rad, rng);
+      const Eigen::Vector3d tcp = robot.visit_tcp_m(c.q_rad, rng, approach.move_to(c.q_rad));
       for (int r = 0; r < k; ++r) {  // Welford, as a file's repeat readings are averaged
         const Eigen::Vector3d x = tracker_reading(T_sensor_robot, tracker.noise_sigma_m, tcp, rng);
         l.n_readings += 1;

@@ -44,6 +44,11 @@ void RobotErrorModel::validate(int n_joints) const {
     check_list(transmission_amplitude_rad, n_joints, "transmission amplitude", false);
     check_list(transmission_period_rad, n_joints, "transmission period", true);
   }
+  if (!lost_motion_rad.empty()) check_list(lost_motion_rad, n_joints, "lost motion", false);
+  VRREG_THROW_UNLESS(
+      std::isfinite(lost_motion_take_up) && lost_motion_take_up >= 0.0 &&
+          lost_motion_take_up <= 1.0,
+      "robot error model: lost motion take-up must be in [0, 1], got " << lost_motion_take_up);
   if (compliance) {
     check_list(link_mass_kg, n_joints, "link mass", false);
     check_list(joint_stiffness_nm_per_rad, n_joints, "joint stiffness", true);
@@ -53,9 +58,12 @@ void RobotErrorModel::validate(int n_joints) const {
 bool RobotErrorModel::is_perfect() const {
   bool no_transmission = true;
   for (double a : transmission_amplitude_rad) no_transmission = no_transmission && a == 0.0;
+  bool no_lost_motion = true;
+  for (double b : lost_motion_rad) no_lost_motion = no_lost_motion && b == 0.0;
+  no_lost_motion = no_lost_motion || lost_motion_take_up == 0.0;
   return link_growth == 0.0 && joint_offset_sigma_rad == 0.0 && link_length_sigma_m == 0.0 &&
          link_offset_sigma_m == 0.0 && twist_sigma_rad == 0.0 && repeatability_sigma_m == 0.0 &&
-         no_transmission && !compliance;
+         no_transmission && no_lost_motion && !compliance;
 }
 
 RobotErrors draw_robot_errors(const RobotErrorModel& model, int n_joints, Random& rng) {

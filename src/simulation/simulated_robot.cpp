@@ -50,14 +50,24 @@ SimulatedRobot::SimulatedRobot(kinematics::SerialChain nominal, RobotErrorModel 
                           << model_.transmission_amplitude_rad.size() << " amplitudes");
 }
 
-kinematics::JointVector SimulatedRobot::actual_joints(const kinematics::JointRef& q_cmd_rad) const {
+kinematics::JointVector SimulatedRobot::actual_joints(
+    const kinematics::JointRef& q_cmd_rad, const kinematics::JointRef& approach_sign) const {
   nominal_.check_joints(q_cmd_rad, "simulated robot");
+  VRREG_THROW_UNLESS(approach_sign.size() == 0 || approach_sign.size() == q_cmd_rad.size(),
+                     "simulated robot: " << approach_sign.size() << " approach signs for "
+                                         << q_cmd_rad.size() << " joints");
   kinematics::JointVector q = q_cmd_rad;
   for (std::size_t i = 0; i < model_.transmission_amplitude_rad.size(); ++i) {
     const auto k = static_cast<Eigen::Index>(i);
     const double omega = 2.0 * std::numbers::pi / model_.transmission_period_rad[i];
     q(k) += model_.transmission_amplitude_rad[i] *
             std::sin(omega * q_cmd_rad(k) + errors_.transmission_phase_rad[i]);
+  }
+  if (approach_sign.size() > 0) {
+    for (std::size_t i = 0; i < model_.lost_motion_rad.size(); ++i) {
+      const auto k = static_cast<Eigen::Index>(i);
+      q(k) -= approach_sign(k) * model_.lost_motion_take_up * 0.5 * model_.lost_motion_rad[i];
+    }
   }
   if (model_.compliance) {
     q += gravity_deflection_rad(nominal_, q_cmd_rad, model_.link_mass_kg, model_.payload_kg,
@@ -66,17 +76,29 @@ kinematics::JointVector SimulatedRobot::actual_joints(const kinematics::JointRef
   return q;
 }
 
-Eigen::Vector3d SimulatedRobot::actual_tcp_m(const kinematics::JointRef& q_cmd_rad) const {
-  return kinematics::forward_kinematics(actual_, actual_joints(q_cmd_rad)).translation();
+Eigen::Vector3d SimulatedRobot::actual_tcp_m(const kinematics::JointRef& q_cmd_rad,
+                                             const kinematics::JointRef& approach_sign) const {
+  return kinematics::forward_kinematics(actual_, actual_joints(q_cmd_rad, approach_sign))
+      .translation();
 }
 
-Eigen::Matrix3d SimulatedRobot::actual_rotation(const kinematics::JointRef& q_cmd_rad) const {
-  return kinematics::forward_kinematics(actual_, actual_joints(q_cmd_rad)).linear();
+Eigen::Matrix3d SimulatedRobot::actual_rotation(const kinematics::JointRef& q_cmd_rad,
+                                                const kinematics::JointRef& approach_sign) const {
+  return kinematics::forward_kinematics(actual_, actual_joints(q_cmd_rad, approach_sign)).linear();
 }
 
-Eigen::Vector3d SimulatedRobot::visit_tcp_m(const kinematics::JointRef& q_cmd_rad,
-                                            Random& rng) const {
-  return actual_tcp_m(q_cmd_rad) + rng.normal3(model_.repeatability_sigma_m);
+Eigen::Vector3d SimulatedRobot::visit_tcp_m(const kinematics::JointRef& q_cmd_rad, Random& rng,
+                                            const kinematics::JointRef& approach_sign) const {
+  return actual_tcp_m(q_cmd_rad, approach_sign) + rng.normal3(model_.repeatability_sigma_m);
+}
+
+JointApproach::JointApproach(const kinematics::JointRef& q_start_rad)
+    : q_rad_(q_start_rad), sign_(kinematics::JointVector::Zero(q_start_rad.size())) {}
+
+const kinematics::JointVector& JointApproach::move_to(const kinematics::JointRef& q_rad) {
+  update_approach_sign(q_rad_, q_rad, sign_);
+  q_rad_ = q_rad;
+  return sign_;
 }
 
 }  // namespace vrreg::simulation

@@ -154,5 +154,54 @@ TEST_F(PlanCli, BadInputIsOneLineNamingTheProblem) {
   EXPECT_EQ(r.status, 1);
 }
 
+
+TEST_F(PlanCli, ApproachFromWritesViaRowsTheSimulatorAndTheProgramFollow) {
+  write_text(parts_, "point,robot_x_mm,robot_y_mm,robot_z_mm\nhole_A,420,-140,250\n");
+  const std::string program = (dir_ / "program.csv").string();
+  const CliResult r = run_vrreg("plan --parts '" + parts_ +
+                                "' --halfwidth-mm 5 --spacing-mm 5 --robot ur5 --approach-from "
+                                "+,-,+,+,+,+ --approach-offset-deg 3 --export csv --program '" +
+                                program + "' -o '" + plan_ + "'");
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("every joint arrives from + - + + + +"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("a via point 3.000 deg before each of 65 locations"), std::string::npos)
+      << r.out;
+  const std::vector<std::string> lines = data_lines(read_text(plan_));
+  ASSERT_EQ(lines.size(), 1u + 2u * 65u);  // a via row before every location
+  for (std::size_t i = 1; i < lines.size(); i += 2) {
+    const std::string point = lines[i].substr(0, lines[i].find(','));
+    EXPECT_TRUE(lines[i].starts_with(point + ",via,hole_A,")) << lines[i];
+    EXPECT_TRUE(lines[i + 1].starts_with(point + ",")) << lines[i + 1];
+    EXPECT_EQ(lines[i + 1].find(",via,"), std::string::npos) << lines[i + 1];
+  }
+  // The program: via (0 readings) then the location, in the plan's order.
+  const std::vector<std::string> rows = data_lines(read_text(program));
+  ASSERT_EQ(rows.size(), 1u + 2u * 65u);
+  EXPECT_NE(rows[1].find(",via,"), std::string::npos) << rows[1];
+  EXPECT_TRUE(rows[1].ends_with(",0")) << rows[1];
+  EXPECT_TRUE(rows[2].ends_with(",12")) << rows[2];
+  // The simulator goes through the via points: the measurement CSV names where each row came from.
+  const std::string measured = (dir_ / "measured.csv").string();
+  const CliResult sim = run_vrreg("simulate ur5 --plan '" + plan_ + "' -o '" + measured + "'");
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  EXPECT_NE(sim.out.find("65 locations"), std::string::npos) << sim.out;
+  EXPECT_NE(read_text(measured).find(",from_q1_rad,"), std::string::npos);
+  // Without the option: no via rows, no from_q columns.
+  ASSERT_EQ(run_vrreg("plan --parts '" + parts_ +
+                      "' --halfwidth-mm 5 --spacing-mm 5 --robot ur5 -o '" + plan_ + "'")
+                .status,
+            0);
+  EXPECT_EQ(read_text(plan_).find(",via,"), std::string::npos);
+  ASSERT_EQ(run_vrreg("simulate ur5 --plan '" + plan_ + "' -o '" + measured + "'").status, 0);
+  EXPECT_EQ(read_text(measured).find("from_q"), std::string::npos);
+  // Bad directions: one line naming the option.
+  const CliResult bad = run_vrreg("plan --parts '" + parts_ +
+                                  "' --halfwidth-mm 5 --spacing-mm 5 --robot ur5 "
+                                  "--approach-from +,-");
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("--approach-from: robot 'ur5' has 6 joints, got 2"), std::string::npos)
+      << bad.err;
+}
+
 }  // namespace
 }  // namespace vrreg::testing

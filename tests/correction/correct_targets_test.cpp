@@ -217,12 +217,20 @@ TEST_F(CorrectTargets, RejectsUnusableInput) {
   EXPECT_THROW(
       (void)correct_targets(short_model, targets_sensor, none, with(InterpolationMethod::kLinear)),
       InputError);
-  CorrectionField flat = make_model(grid_points(5, 5, 1, Eigen::Vector3d::Constant(0.02)), T);
-  EXPECT_THROW((void)correct_targets(flat, targets_sensor, none, with(InterpolationMethod::kLinear)),
-               InputError);
   CorrectionField empty;
   EXPECT_THROW((void)correct_targets(empty, targets_sensor, none, with(InterpolationMethod::kLinear)),
                InputError);
+}
+
+// Fiducials in a plane are answered, not refused: every target uncorrected, "flat layout".
+TEST_F(CorrectTargets, AFlatLayoutLeavesEveryTargetUncorrected) {
+  const Points3 none(3, 0);
+  const CorrectionField flat = make_model(grid_points(5, 5, 1, Eigen::Vector3d::Constant(0.02)), T);
+  const TargetCorrection c =
+      correct_targets(flat, targets_sensor, none, with(InterpolationMethod::kLinear));
+  EXPECT_EQ(c.n_flagged, targets_sensor.cols());
+  for (const Stencil& s : c.stencils) EXPECT_EQ(s.status, StencilStatus::kFlatLayout);
+  EXPECT_EQ(c.corrected_robot_m, c.uncorrected_robot_m);
 }
 
 TEST_F(CorrectTargets, ScaleIsApplied) {

@@ -112,6 +112,19 @@ inline ServedFixture& served() {
   return fixture;
 }
 
+}  // namespace vrreg::fuzz
+
+#ifdef VRREG_LIBFUZZER
+// Fitting the served models takes over 10 s under the sanitizers: done in libFuzzer's set-up,
+// whose time is not the first input's (it would otherwise time out on the empty input).
+extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
+  (void)vrreg::fuzz::served();
+  return 0;
+}
+#endif
+
+namespace vrreg::fuzz {
+
 /// The numbers of a reply line "(a,b,...)\n"; throws Finding when it is not one.
 inline std::vector<double> reply_numbers(const std::string& reply, const std::string& what) {
   require(reply.size() >= 3 && reply.front() == '(' && reply.substr(reply.size() - 2) == ")\n" &&

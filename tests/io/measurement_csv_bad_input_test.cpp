@@ -129,6 +129,13 @@ TEST_F(BadCsv, OverflowingValue) {
   EXPECT_TRUE(
       fails(kBadInputHeader + "P2,fiducial,1,2,3,1e400,5,6\n", 2, "'1e400' is not a finite"));
 }
+TEST_F(BadCsv, OutOfRangeValue) {
+  // Finite, but squared in a registration's sums it overflows: refused as read, naming the point.
+  EXPECT_TRUE(fails(kBadInputHeader + "P2,fiducial,1e308,2,3,4,5,6\n", 2,
+                    "point 'P2', column 'robot_x_mm': 1e308 is out of range"));
+  EXPECT_TRUE(fails(kBadInputHeader + "P2,fiducial,1,2,3,4,5,-2e9\n", 2,
+                    "column 'sensor_z_mm': -2e9 is out of range"));
+}
 TEST_F(BadCsv, NonNumericValue) {
   EXPECT_TRUE(fails(kBadInputHeader + "P2,fiducial,1,2,3,4,abc,6\n", 2,
                     "column 'sensor_y_mm': 'abc' is not a finite number"));

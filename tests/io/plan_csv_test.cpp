@@ -113,5 +113,48 @@ TEST(PlanCsv, BadPlanFiles) {
   EXPECT_TRUE(fails(h + "A\"x,fiducial,P,1,2,3,0,0.5\n", 2, "point label"));
 }
 
+
+TEST(PlanCsv, ViaRowsComeJustBeforeTheirLocationAndReadBackOntoIt) {
+  TempDir dir;
+  const std::string path = dir.file("plan.csv");
+  std::vector<PlanRow> rows = sample_rows();
+  rows[1].via = PlanVia{{0.451, -0.099, 0.252}, {0.08, -1.24, 1.28, -0.34, -1.6, 1.98}};
+  write_plan_csv(path, rows);
+  const std::string text = vrreg::testing::read_text(path);
+  const auto via = text.find("\nP,via,P,");
+  ASSERT_NE(via, std::string::npos) << text;
+  EXPECT_LT(via, text.find("\nP,target,P,"));
+  EXPECT_NE(text.find(",0.08,-1.24,", via), std::string::npos) << text;
+  EXPECT_LT(text.find("\nP.f0-0-0,fiducial"), via);
+  const PlanFile back = read_plan_csv(path);
+  ASSERT_EQ(back.rows.size(), 3u);  // the via row is not a location
+  EXPECT_FALSE(back.rows[0].via.has_value());
+  ASSERT_TRUE(back.rows[1].via.has_value());
+  EXPECT_EQ(back.rows[1].via->q_rad, rows[1].via->q_rad);
+  EXPECT_NEAR((back.rows[1].via->robot_m - rows[1].via->robot_m).norm(), 0.0, 1e-15);
+  EXPECT_EQ(back.rows[1].role, Role::kTarget);
+  EXPECT_FALSE(back.rows[2].via.has_value());
+  // A plan without via points is written as before: no via row.
+  write_plan_csv(path, sample_rows());
+  EXPECT_EQ(vrreg::testing::read_text(path).find(",via,"), std::string::npos);
+}
+
+TEST(PlanCsv, AViaRowMustLeadToItsLocation) {
+  TempDir dir;
+  const auto fails = [&](const std::string& content, std::size_t line, const std::string& what) {
+    const std::string path = dir.write("bad.csv", content);
+    return throws_file_error([&] { (void)read_plan_csv(path); }, path, line, what);
+  };
+  const std::string h = "point,role,part,robot_x_mm,robot_y_mm,robot_z_mm,config,q1_rad\n";
+  EXPECT_TRUE(fails(h + "A,fiducial,P,1,2,3,0,0.5\nB,via,P,1,2,3,0,0.4\n", 3,
+                    "via row of 'B' is the last row"));
+  EXPECT_TRUE(fails(h + "B,via,P,1,2,3,0,0.4\nA,fiducial,P,1,2,3,0,0.5\n", 2,
+                    "via row of 'B' is not followed by its location"));
+  EXPECT_TRUE(fails(h + "A,via,P,1,2,3,0,0.4\nA,via,P,1,2,3,0,0.4\nA,fiducial,P,1,2,3,0,0.5\n",
+                    2, "is not followed by its location"));
+  EXPECT_TRUE(fails(h + "A,via,P,1,2,3,1,0.4\nA,fiducial,P,1,2,3,0,0.5\n", 2,
+                    "is not followed by its location"));
+}
+
 }  // namespace
 }  // namespace vrreg::io

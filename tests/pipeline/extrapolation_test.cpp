@@ -81,8 +81,8 @@ TEST_P(Extrapolation, FarTargetsAreFlaggedOrCorrectedWithAnSdThatCoversTheError)
     const double z = far.cor_tre_m(t) / sd_m;
     std::printf("%s: TRE %.3f -> %.3f mm, sd %.3f mm, z %.2f\n", cube.targets.names[t].c_str(),
                 far.unc_tre_m(t) * 1e3, far.cor_tre_m(t) * 1e3, sd_m * 1e3, z);
-    // The correction at the support's edge: bounded by the field, never a model's runaway.
-    EXPECT_LT(far.cor_tre_m(t), far.unc_tre_m(t) + 3e-4) << t;
+    // The answer leaves the uncorrected one by no more than its sd says: never a model's runaway.
+    EXPECT_LT(far.cor_tre_m(t), far.unc_tre_m(t) + 2.0 * sd_m) << t;
     sum_z2 += z * z;
   }
   const double rms_z = std::sqrt(sum_z2 / 3.0);

@@ -34,6 +34,8 @@ void expect_same(const simulation::TestbedErrorModel& a, const simulation::Testb
   EXPECT_TRUE(near_list(a.robot.link_mass_kg, b.robot.link_mass_kg));
   EXPECT_TRUE(near_list(a.robot.joint_stiffness_nm_per_rad, b.robot.joint_stiffness_nm_per_rad));
   EXPECT_TRUE(near(a.robot.payload_kg, b.robot.payload_kg));
+  EXPECT_TRUE(near_list(a.robot.lost_motion_rad, b.robot.lost_motion_rad));
+  EXPECT_TRUE(near(a.robot.lost_motion_take_up, b.robot.lost_motion_take_up));
   EXPECT_TRUE(near(a.tracker.distance_m, b.tracker.distance_m));
   EXPECT_TRUE(near(a.tracker.azimuth_rad, b.tracker.azimuth_rad));
   EXPECT_TRUE(near(a.tracker.elevation_rad, b.tracker.elevation_rad));
@@ -57,6 +59,29 @@ TEST(ErrorModelFile, RoundTripsEveryParameter) {
     // Values are written to 12 significant digits; writing what was read gives the same file.
     EXPECT_EQ(format_error_model(back, testbed.name), testing::read_text(path));
   }
+}
+
+TEST(ErrorModelFile, RoundTripsLostMotionAndWritesNoKeyWithout) {
+  const simulation::Testbed testbed = simulation::ur5_testbed();
+  EXPECT_EQ(format_error_model(testbed.default_errors, testbed.name).find("lost_motion"),
+            std::string::npos);
+  const simulation::TestbedErrorModel model = parse_error_model(
+      R"({"robot": {"lost_motion_arcmin": [0.6, 0.15, 0.15, 0.5, 0.4, 0.7],
+                    "lost_motion_take_up": 0.8}})",
+      "e.json", testbed);
+  ASSERT_EQ(model.robot.lost_motion_rad.size(), 6u);
+  EXPECT_NEAR(model.robot.lost_motion_rad[0], 0.6 / 60.0 * M_PI / 180.0, 1e-18);
+  EXPECT_DOUBLE_EQ(model.robot.lost_motion_take_up, 0.8);
+  const std::string text = format_error_model(model, testbed.name);
+  EXPECT_NE(text.find("\"lost_motion_arcmin\""), std::string::npos);
+  expect_same(parse_error_model(text, "back.json", testbed), model);
+  EXPECT_TRUE(testing::throws_file_error(
+      [&] {
+        parse_error_model(R"({"robot": {"lost_motion_arcmin": [1, 1, 1, 1, 1, 1],
+                                        "lost_motion_take_up": 2}})",
+                          "t.json", testbed);
+      },
+      "t.json", 0, "take-up must be in [0, 1]"));
 }
 
 TEST(ErrorModelFile, AbsentKeysKeepTheDefaults) {

@@ -298,6 +298,8 @@ TEST(ServiceLines, TheBoundIsOnTheRequestWhicheverLineEnd) {
   EXPECT_THAT(answer, StartsWith("("));
   EXPECT_NE(answer, "(0,0,0,-6)\n");
   EXPECT_EQ(c.ask(request + "\r\n"), answer);
+  // One '\r' is the line end's; a second is a control character in the request.
+  EXPECT_EQ(c.ask("cell 1 2 3\r\r\n"), "(0,0,0,-1)\n");
   EXPECT_EQ(c.ask(request + " \r\n"), "(0,0,0,-6)\n");  // 1 025 bytes
   EXPECT_EQ(c.read_line(), "");
   LineClient d(service.line_port());

@@ -155,6 +155,65 @@ TEST_F(ServeOrientation, PoseRequestsAreAnsweredAsCorrectInTheFormAsked) {
             expected_reply(model_, units::m_to_mm(1.0) * first.sensor_m));
 }
 
+// Whatever the method, a model with orientations is served (its load-time probe is an
+// extrapolating pose request) and answers poses inside and beyond its support as `correct` does.
+TEST_F(ServeOrientation, EveryMethodServesPosesInsideAndExtrapolated) {
+  int answered = 0;
+  for (const InterpolationMethod method :
+       {InterpolationMethod::kGrid, InterpolationMethod::kScattered, InterpolationMethod::kTrilinear,
+        InterpolationMethod::kKriging, InterpolationMethod::kRbf}) {
+    SCOPED_TRACE(to_string(method));
+    RegisterOptions options;
+    options.interpolation.method = method;
+    const std::string path = dir_.file(std::string(to_string(method)) + ".json");
+    io::write_model_json(path, register_fiducials(cell_, options).model);
+    const RegistrationModel model = io::read_model_json(path);
+    Service service(local_options(path), nullptr);
+    ASSERT_NO_THROW(service.start());
+    LineClient c(service.line_port());
+    Location target = cell_.locations[cell_.select(Role::kTarget)[7]];
+    for (const bool beyond : {false, true}) {
+      // Beyond: 0.2 m along the sensor's x from a target, outside the fiducials' box.
+      if (beyond) target.sensor_m.x() += 0.2;
+      std::string line = pose_line(target, OrientationForm::kQuaternion);
+      if (beyond) line.insert(line.size() - 1, " extrapolate");
+      MeasuredPoints p;
+      p.sensor_m = target.sensor_m;
+      p.q_sensor_marker = {*target.q_sensor_marker};
+      CorrectOptions o;
+      o.extrapolate = beyond;
+      const CorrectResult r = correct(model, p, o);
+      const StencilStatus status = r.correction.stencils[0].status;
+      const std::vector<double> v = numbers_of(c.ask(line));
+      ASSERT_EQ(v.size(), 9u) << line;
+      if (r.correction.guard && !r.correction.guard->applied) {  // its guard held it back
+        EXPECT_EQ(v[7], -3.0);
+        continue;
+      }
+      ASSERT_EQ(status, beyond ? StencilStatus::kExtrapolated : StencilStatus::kOk);
+      if (!is_corrected(r.orientation->status[0])) {  // the pose is refused as a whole
+        EXPECT_LT(v[7], 0.0) << to_string(r.orientation->status[0]);
+        continue;
+      }
+      ++answered;
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(v[static_cast<std::size_t>(a)],
+                    units::m_to_mm(r.correction.corrected_robot_m(a, 0)), 1e-6);
+      }
+      EXPECT_LT(rotation_angle_rad(orientation_of(v, OrientationForm::kQuaternion),
+                                   r.orientation->corrected_R_robot_marker[0]),
+                1e-8);
+      EXPECT_GE(v[7], 0.0);
+      EXPECT_GE(v[8], 0.0);
+      // An extrapolated answer always carries its sd, the stencils' too.
+      if (beyond) {
+        EXPECT_GT(v[7], 0.0);
+      }
+    }
+  }
+  EXPECT_GE(answered, 7);  // at most one method held back by its guard on this cell
+}
+
 TEST_F(ServeOrientation, BadOrientationsAreRefusedInTheFormTheClientReads) {
   Service service(local_options(dir_.file("cell.json")), nullptr);
   service.start();

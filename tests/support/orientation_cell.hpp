@@ -2,7 +2,8 @@
 #pragma once
 // A small cell with rigid-body markers for the tests of orientations through the library's
 // doors (files, arrays, the service): fiducials and targets with measured and commanded
-// orientations, the marker missing its commanded orientation by a smooth field of a few mrad.
+// orientations, the marker missing its commanded orientation by a smooth field of a few mrad and
+// its commanded position by one of 0.1 mm (five times the noise: a correction the guard applies).
 #include <cmath>
 #include <string>
 
@@ -31,7 +32,10 @@ inline MeasurementSet cell_with_orientations() {
           l.role = target ? Role::kTarget : Role::kFiducial;
           l.robot_m = Eigen::Vector3d(0.4, -0.1, 0.1) + 0.04 * Eigen::Vector3d(i, j, k) +
                       (target ? Eigen::Vector3d::Constant(0.02) : Eigen::Vector3d::Zero());
-          l.sensor_m = T_sensor_robot.apply(l.robot_m + rng.normal3(2e-5));
+          const Eigen::Vector3d error_m(1e-4 * std::sin(10 * l.robot_m.x()),
+                                        1e-4 * std::cos(12 * l.robot_m.y()),
+                                        1e-4 * std::sin(9 * l.robot_m.z()));
+          l.sensor_m = T_sensor_robot.apply(l.robot_m + error_m + rng.normal3(2e-5));
           l.n_readings = 4;
           l.sensor_sq_dev_m2 = Eigen::Vector3d::Constant(3 * 4e-10);
           const Eigen::Matrix3d commanded = rng.rotation();

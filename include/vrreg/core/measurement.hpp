@@ -34,6 +34,10 @@ struct Location {
   int n_readings = 0;             ///< number of repeat readings averaged into sensor_m
   Eigen::Vector3d sensor_sq_dev_m2 = Eigen::Vector3d::Zero();  ///< per-axis sum of squared deviations
   std::vector<double> q_rad{};                                 ///< joint angles, empty when absent
+  /// Per joint, the sign of the joint's last move before this reading (+1 arrived moving up,
+  /// -1 moving down, 0 unknown): lost motion leaves the joint short of its command against it.
+  /// Empty when the file gives neither joints nor from_q columns (docs/file-formats.md).
+  std::vector<double> approach_sign{};
   /// The marker's orientation in the sensor frame (rigid-body trackers), averaged over the
   /// repeat readings; empty when the file has no sensor_qx..qw columns.
   std::optional<Eigen::Quaterniond> q_sensor_marker{};
@@ -48,6 +52,20 @@ struct Location {
   std::size_t source_line = 0;    ///< first line of the file this location came from (1-based)
 };
 
+/// Where a measurement set's approach directions (Location::approach_sign) come from.
+enum class ApproachSource {
+  kNone,       ///< no joints: the directions are unknown
+  kRowOrder,   ///< the rows' order is the visiting order: each joint's last move before the row
+  kFromJoints  ///< from_q1..from_qN columns: the joints the robot came from, row by row
+};
+
+/// Updates `sign_out` (per joint -1, 0, +1) for a move from `q_from_rad` to `q_to_rad` [rad]: a
+/// joint that moved takes the sign of its move; a joint that did not move keeps its sign (the
+/// gear play stays taken up where the last move left it).
+void update_approach_sign(const Eigen::Ref<const Eigen::VectorXd>& q_from_rad,
+                          const Eigen::Ref<const Eigen::VectorXd>& q_to_rad,
+                          Eigen::Ref<Eigen::VectorXd> sign_out);
+
 /// All locations of one file, in the order of their first reading (the visiting order).
 struct MeasurementSet {
   std::string source{};  ///< file name, for messages
@@ -56,6 +74,7 @@ struct MeasurementSet {
   bool has_config = false;
   bool has_repeat = false;
   bool has_visit = false;
+  ApproachSource approach = ApproachSource::kNone;  ///< where approach_sign came from
 
   /// Indices of the locations with this role and, if given, this configuration label.
   [[nodiscard]] std::vector<std::size_t> select(Role role, std::optional<int> config = {}) const;

@@ -34,7 +34,8 @@ struct TargetCorrection {
   Points3 uncorrected_robot_m{};   ///< R T_X + tau
   int n_flagged = 0;             ///< targets with status != kOk
   /// Field models (docs/field-models.md): the predicted standard uncertainty of each corrected
-  /// target's 3D error [m] (NaN where flagged); empty for the paper's stencils.
+  /// target's 3D error [m] (NaN where flagged); empty for the paper's stencils unless some target
+  /// was extrapolated (then NaN but there; docs/uncertainty.md).
   Eigen::VectorXd predicted_sd_m{};
   /// Whether the correction was applied and the figures that decided it (correction_guard.hpp);
   /// none when the corrector was not guarded.

@@ -65,10 +65,11 @@ struct CorrectionQuery {
   ConstPoints3Ref robot_nominal_m;     ///< nominal robot positions [m] (octuplet, Strategy 3)
   Eigen::Ref<const Eigen::MatrixXd> joints_rad;  ///< commanded joints [rad] (joint, Strategy 3)
   std::span<const std::size_t> sequence{};  ///< where each point was read (file line), or empty
-  /// Correct points outside a field model's support too (status kExtrapolated) instead of
-  /// leaving them uncorrected: with the correction at the support's nearest point and an sd
-  /// widened by the field's gradient over the distance, up to the field's own spread (what a
-  /// correction far from every fiducial can be off by). The paper's stencils never extrapolate.
+  /// Correct points outside the method's support (grid, hull, box, joint ranges) too, status
+  /// kExtrapolated, instead of leaving them uncorrected: every method alike, with the correction
+  /// at the support's nearest point plus half the field's affine trend from there, and an sd
+  /// that covers whether the trend goes on or stops (docs/uncertainty.md). Holes inside a layout
+  /// (an octuplet's missing corner within the fiducials' box) and flat layouts stay flagged.
   bool extrapolate = false;
 };
 

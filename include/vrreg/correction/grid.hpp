@@ -46,7 +46,7 @@ struct GridDetection {
                                         double tolerance_m);
 
 /// Trilinear weights (Eq. 7) of the grid cell that holds point_robot_m [m] (the registered
-/// target R T_X + tau); status kOutsideGrid beyond tolerance_m [m] outside, never extrapolated.
+/// target R T_X + tau); status kOutsideGrid beyond tolerance_m [m] outside, not extrapolated here (the corrector does on request).
 [[nodiscard]] Stencil grid_stencil(const GridLayout& grid, const Eigen::Vector3d& point_robot_m,
                                    double tolerance_m);
 

@@ -3,8 +3,8 @@
 // Writes individual readings (not averaged) as a measurement CSV (design.md 6) in millimetres and
 // radians, with numbers in the shortest text that reads back exactly; read_measurement_csv reads
 // it back. Columns: point, role, robot_{x,y,z}_mm (unless no reading has a robot position),
-// sensor_{x,y,z}_mm, then config, q1_rad..qN_rad, repeat, visit, sensor_qx..qw, robot_qx..qw
-// when the readings carry them.
+// sensor_{x,y,z}_mm, then config, q1_rad..qN_rad, from_q1_rad..from_qN_rad, repeat, visit,
+// sensor_qx..qw, robot_qx..qw when the readings carry them.
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +22,8 @@ struct Reading {
   Eigen::Vector3d sensor_m = Eigen::Vector3d::Zero();  ///< measured position, sensor frame [m]
   std::optional<int> config{};  ///< arm configuration label (all readings or none)
   std::vector<double> q_rad{};  ///< joint angles [rad] (same count in every reading)
+  /// Joints the robot came from (from_q1_rad..; all readings or none; as many as q_rad) [rad].
+  std::vector<double> from_q_rad{};
   std::optional<int> repeat{};  ///< repeat index >= 0 (all readings or none)
   std::optional<int> visit{};   ///< visit index >= 0 (all readings or none)
   /// The marker's measured orientation, sensor frame (sensor_qx..qw; all readings or none).

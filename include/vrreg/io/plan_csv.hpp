@@ -9,6 +9,9 @@
 // whose cube the row belongs to. `#` comment lines (written first) hold the planning parameters.
 // The reader takes the columns in any order (case-insensitive, _m / _deg allowed); part, config
 // and joints are optional; (point, config) must be unique; bad input throws FileError.
+// A row of role `via` is a joint-space via point the robot moves to, never measures (one approach
+// direction per joint, planning/approach.hpp): it comes just before the row of the location it
+// leads to, with that row's point label; the reader attaches it to that row (PlanRow::via).
 #include <Eigen/Core>
 #include <cstddef>
 #include <istream>
@@ -20,6 +23,12 @@
 
 namespace vrreg::io {
 
+/// A via point moved to just before a location, never measured (written as its own `via` row).
+struct PlanVia {
+  Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();  ///< nominal TCP, robot base frame [m]
+  std::vector<double> q_rad{};                        ///< commanded joints [rad]
+};
+
 /// One location of a plan, SI units.
 struct PlanRow {
   std::string point{};  ///< label: not empty, no comma, quote, newline, leading '#' or spaces
@@ -29,6 +38,7 @@ struct PlanRow {
   std::optional<int> config{};  ///< configuration label index (all rows or none)
   std::vector<double> q_rad{};  ///< commanded joints [rad] (same count in every row)
   std::size_t line = 0;       ///< 1-based line when read from a file
+  std::optional<PlanVia> via{};  ///< the via point moved to just before (approach directions)
 };
 
 /// A plan file's rows (visiting order) and comment lines (without the leading "# ").

@@ -30,7 +30,7 @@ struct CorrectOptions {
   /// Kriging and RBF: correct with the model itself rather than its table (within 1/20 of the noise,
   /// measured when fitted; CorrectorOptions::tabulate). Slower: kriging's sd costs O(J^2) a point.
   bool exact = false;
-  /// Field models: correct points outside the fiducials' support too, status "extrapolated",
+  /// Correct points outside the method's support too (every method), status "extrapolated",
   /// with a widened sd (CorrectionQuery::extrapolate). Off: they are left uncorrected.
   bool extrapolate = false;
 };

@@ -8,6 +8,7 @@
 // between them short (cube_tour.hpp).
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "vrreg/kinematics/configuration_label.hpp"
 #include "vrreg/kinematics/joint_vector.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
+#include "vrreg/planning/approach.hpp"
 #include "vrreg/planning/arm_configuration.hpp"
 #include "vrreg/planning/dmin_criterion.hpp"
 #include "vrreg/planning/fiducial_grid.hpp"
@@ -35,6 +37,9 @@ struct PlanOptions {
   bool force = false;                        ///< plan even when Eq. 9 fails
   ArmConfigurationOptions arm{};             ///< tool orientation, norm, psi, home joints
   long long max_locations = 100'000;         ///< refuse larger plans (a robot visits each one)
+  /// One approach direction per joint: a via point before every location (approach.hpp); empty
+  /// direction = off (the arm moves from location to location directly).
+  ApproachOptions approach{};
   /// Throws InputError on a bad field (see the members) for `chain`.
   void validate(const kinematics::SerialChain& chain) const;
 };
@@ -55,6 +60,10 @@ struct PlannedLocation {
   kinematics::JointVector q_rad{};                       ///< commanded joints [rad]
   kinematics::ConfigurationLabel config{};
   double joint_distance_rad = 0.0;  ///< to its part point's joints (options.arm.norm) [rad]
+  /// The joint-space via point the arm moves to just before this location, never measured: every
+  /// joint then arrives moving in the plan's approach direction (approach.hpp). Empty: none.
+  std::optional<kinematics::JointVector> via_q_rad{};
+  Eigen::Vector3d via_robot_m = Eigen::Vector3d::Zero();  ///< nominal TCP at via_q_rad [m]
 };
 
 /// Per part point: its cube and configuration.

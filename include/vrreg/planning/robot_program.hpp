@@ -3,6 +3,7 @@
 // A plan as a program the robot runs to collect the data (docs/hand-eye.md): each location in
 // visiting order, a joint move, a settling pause, and a stop until the tracker's readings are
 // taken. URScript (Universal Robots), KRL (KUKA) or a plain joint CSV for any controller.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct ProgramLocation {
   std::string config{};             ///< configuration label, empty when none
   kinematics::JointVector q_rad{};  ///< commanded joints [rad]
   int visit = -1;  ///< which visit of a point read in rounds (monitor points); -1: not numbered
+  /// Joints of a via point moved to just before, without a stop or readings (approach.hpp) [rad];
+  /// empty: none.
+  std::optional<kinematics::JointVector> via_q_rad{};
 };
 
 /// How the program moves and waits.
@@ -37,7 +41,8 @@ struct ProgramOptions {
   void validate() const;
 };
 
-/// The program text. URScript needs 6 joints; KRL 6 (A1-A6) or 7 (LWR 4+: A1 A2 E1 A3 A4 A5 A6).
+/// The program text; a location's via point is a joint move of its own just before it, marked
+/// "via" (no pause, no readings; the joint CSV gives it repeats 0). URScript needs 6 joints; KRL 6 (A1-A6) or 7 (LWR 4+: A1 A2 E1 A3 A4 A5 A6).
 /// Throws InputError on an empty plan, non-finite joints or a joint count the format cannot take.
 std::string robot_program(const std::vector<ProgramLocation>& locations, ProgramFormat format,
                           const ProgramOptions& options = {});

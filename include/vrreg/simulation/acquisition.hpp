@@ -54,6 +54,9 @@ struct SimulatedVisit {
   /// one (the actual model at the actual joints), base frame; set with a rigid-body tracker.
   Eigen::Matrix3d R_commanded = Eigen::Matrix3d::Identity();
   Eigen::Matrix3d R_true = Eigen::Matrix3d::Identity();
+  /// Joints the arm is sent to just before, never read: a via point that sets the direction each
+  /// joint arrives from (lost motion) [rad]; empty: moved to directly.
+  std::optional<kinematics::JointVector> via_q_rad{};
 };
 
 /// One tracker reading of a visit.

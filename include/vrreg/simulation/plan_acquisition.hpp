@@ -22,6 +22,8 @@ struct CommandedLocation {
   Eigen::Vector3d robot_m = Eigen::Vector3d::Zero();  ///< nominal TCP position, base frame [m]
   std::optional<int> config{};      ///< the plan's configuration label (all locations or none)
   kinematics::JointVector q_rad{};  ///< commanded joints [rad]
+  /// A via point the robot is sent to just before, never read (approach directions) [rad].
+  std::optional<kinematics::JointVector> via_q_rad{};
 };
 
 /// How far the nominal model's TCP for a location's joints may be from its robot_m [m].

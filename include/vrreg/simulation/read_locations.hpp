@@ -16,7 +16,8 @@ namespace vrreg::simulation {
 /// Reads `locations` in turn, `visits` times over (the arm leaves and comes back: a new
 /// repeatability draw each visit), K readings per visit, with the tracker at `T_robot_sensor`.
 /// One Location per (location, visit): role as commanded, visit index when visits > 1 or the
-/// role is monitor, mean reading, squared deviations, joints.
+/// role is monitor, mean reading, squared deviations, joints. Lost motion follows the path from
+/// the first location (every joint centred in its play there).
 std::vector<Location> read_locations(const SimulatedRobot& robot,
                                      const RigidTransform& T_robot_sensor,
                                      const TrackerModel& tracker,

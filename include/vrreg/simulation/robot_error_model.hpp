@@ -3,7 +3,8 @@
 // How a simulated robot deviates from its nominal model (design.md 5): kinematic (DH) errors, a
 // periodic joint transmission error, per-visit repeatability and optional joint compliance under
 // gravity. RobotErrorModel holds spreads and per-joint constants; a seed draws one concrete robot
-// (RobotErrors) from it, so every seed is another robot of the same make.
+// (RobotErrors) from it, so every seed is another robot of the same make. Lost motion depends on
+// the path: it is applied where the robot moves (simulated_robot.hpp).
 #include <vector>
 
 #include "vrreg/core/random.hpp"
@@ -27,6 +28,14 @@ struct RobotErrorModel {
   std::vector<double> transmission_amplitude_rad{};
   /// Periods P_i [rad] > 0 of the transmission error, one per joint (empty when no amplitudes).
   std::vector<double> transmission_period_rad{};
+  /// Lost motion b_i [rad] of joint i (gear backlash and transmission compliance), one per joint,
+  /// or empty for none. The joint stops lost_motion_take_up * b_i / 2 short of its commanded
+  /// angle, against the direction of its last move along the commanded path (a joint that did not
+  /// move keeps the side its last move left it on; before its first move it sits centred).
+  std::vector<double> lost_motion_rad{};
+  /// Fraction of the lost motion taken up on arrival, in [0, 1] (1: the joint lags by the full
+  /// half play b_i / 2; less when friction stops it inside the play).
+  double lost_motion_take_up = 1.0;
   /// Repeatability: TCP displacement drawn once per visit, Gaussian per axis of the base frame
   /// [m]. Not averaged away by repeat readings of one visit.
   double repeatability_sigma_m = 0.0;
@@ -44,7 +53,8 @@ struct RobotErrorModel {
   double link_growth = 0.0;
 
   /// Throws InputError unless every value is finite and non-negative (link_growth: above -0.01)
-  /// and every per-joint list has `n_joints` entries (transmission lists may both be empty).
+  /// and every per-joint list has `n_joints` entries (transmission lists may both be empty, the
+  /// lost motion list too; its take-up lies in [0, 1]).
   void validate(int n_joints) const;
   /// True when the drawn robot would be the nominal one and every visit lands exactly.
   [[nodiscard]] bool is_perfect() const;
