@@ -348,8 +348,10 @@ TEST_P(CorrectorContract, ExtrapolatedSdCoversTheErrorFarAway) {
       options.interpolation.cube_edge_m = spacing_m;
       options.tabulate = GetParam().tabulate;
       const Corrector corrector = Corrector::fit(d, options);
+      // Both branches lvalues: a temporary would dangle under the query's Eigen::Ref.
+      const Eigen::MatrixXd no_joints(0, 0);
       CorrectionQuery query(cell.targets_sensor_m, cell.targets_robot_m,
-                            GetParam().joints ? cell.targets_q_rad : Eigen::MatrixXd(0, 0));
+                            GetParam().joints ? cell.targets_q_rad : no_joints);
       query.extrapolate = true;
       const TargetCorrection c = corrector.correct(query);
       for (Eigen::Index t = 0; t < cell.targets_robot_m.cols(); ++t) {
