@@ -4,6 +4,7 @@
 // carriage slides the UR5's base along x and ripples between positions.
 #include <cmath>
 
+#include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/dh.hpp"
 #include "vrreg/kinematics/forward_kinematics.hpp"
 #include "vrreg/kinematics/robots.hpp"
