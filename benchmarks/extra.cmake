@@ -27,3 +27,8 @@ vrreg_set_warnings(vrreg_serve_load)
 add_executable(vrreg_extrapolation_study ${CMAKE_CURRENT_SOURCE_DIR}/extrapolation_study.cpp)
 target_link_libraries(vrreg_extrapolation_study PRIVATE vrreg::vrreg)
 vrreg_set_warnings(vrreg_extrapolation_study)
+# What lost motion costs and what its correction gives (docs/joint-space-model.md): a program that
+# prints RMS_T over the noise floor and TRE/sd per physics, layout and seed.
+add_executable(vrreg_lost_motion_study ${CMAKE_CURRENT_SOURCE_DIR}/lost_motion_study.cpp)
+target_link_libraries(vrreg_lost_motion_study PRIVATE vrreg::vrreg)
+vrreg_set_warnings(vrreg_lost_motion_study)

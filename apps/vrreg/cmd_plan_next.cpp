@@ -38,6 +38,8 @@ struct PlanNextArgs {
   int budget = 64;
   double candidate_spacing_mm = 20.0;
   double margin_mm = 20.0;
+  std::vector<double> volume_mm;  ///< x0 x1 y0 y1 z0 z1: a work volume instead of part points
+  double volume_spacing_mm = 50.0;
 };
 
 // The measured fiducials and the noise of one averaged reading (the nugget's floor).
@@ -114,8 +116,21 @@ void run_plan_next_unchecked(const PlanNextArgs& args) {
   VRREG_THROW_UNLESS(args.plan.monitor_program.empty(),
                      "--monitor-program: plan-next plans no monitor points");
   PlanSetup setup = make_plan_setup(args.plan);
-  const std::vector<io::PartRecord> records = io::read_parts_csv(args.plan.parts);
-  for (const io::PartRecord& r : records) setup.parts.push_back({r.point, r.robot_m});
+  VRREG_THROW_UNLESS(args.plan.parts.empty() != args.volume_mm.empty(),
+                     "give the part points as --parts FILE or as --volume (one of them)");
+  std::vector<io::PartRecord> records;
+  if (!args.volume_mm.empty()) {
+    for (const double v : args.volume_mm)
+      VRREG_THROW_UNLESS(std::isfinite(v), "--volume: values must be finite");
+    const auto& v = args.volume_mm;
+    setup.parts = planning::volume_part_points(
+        units::mm_to_m(1.0) * Eigen::Vector3d(v[0], v[2], v[4]),
+        units::mm_to_m(1.0) * Eigen::Vector3d(v[1], v[3], v[5]),
+        units::mm_to_m(args.volume_spacing_mm));
+  } else {
+    records = io::read_parts_csv(args.plan.parts);
+    for (const io::PartRecord& r : records) setup.parts.push_back({r.point, r.robot_m});
+  }
 
   planning::PlanNextOptions options;
   VRREG_THROW_UNLESS(args.goal_sd_mm.has_value() != args.goal_floor_multiple.has_value(),
@@ -142,6 +157,11 @@ void run_plan_next_unchecked(const PlanNextArgs& args) {
     std::string what = e.what();
     if (what.starts_with("plan next: ")) what.erase(0, 11);
     throw InputError("plan next: " + args.measured + ": " + what);
+  }
+  if (!r.ok() && records.empty()) {
+    throw InputError("plan next: --volume: " + r.message +
+                     ". Check that the volume is in the robot base frame, or change --rpy-deg, "
+                     "--home-deg or --psi-deg (see vrreg ik)");
   }
   if (!r.ok()) {
     throw io::FileError(args.plan.parts, records.front().line,
@@ -200,8 +220,17 @@ void add_plan_next_command(CLI::App& app) {
       "predicted sd at the part points falls fastest, and whether to stop (docs/adaptive.md)");
   add_input_option(*cmd, "--parts", args->plan.parts,
                    "CSV of part points: point,robot_x_mm,robot_y_mm,robot_z_mm (robot base frame), "
-                   "or a measurement CSV whose target rows are the part points")
-      ->required();
+                   "or a measurement CSV whose target rows are the part points (or give --volume)");
+  cmd->add_option("--volume", args->volume_mm,
+                  "a work volume instead of --parts: X0 X1 Y0 Y1 Z0 Z1 in mm (robot base frame); "
+                  "the part points are a lattice of --volume-spacing-mm filling it")
+      ->expected(6)
+      ->delimiter(',')
+      ->excludes("--parts");
+  cmd->add_option("--volume-spacing-mm", args->volume_spacing_mm,
+                  "spacing of the part points' lattice in --volume, mm")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   add_robot_option(*cmd, "--robot", args->plan.robot,
                    "ur5, lwr4 (defaults from the simulated test bed), ur3, ur10, ur5e, or a robot "
                    "file (URDF, or JSON/YAML)")

@@ -34,6 +34,7 @@ struct RegisterArgs {
   bool json = false;
   bool exact_sigma_l = false;
   MarkerOffsetFlags marker_offset;
+  std::optional<std::string> lost_motion;  ///< as given; auto when not
 };
 
 void run_register_unchecked(const RegisterArgs& args);
@@ -52,6 +53,7 @@ RegisterOptions register_options(const RegisterArgs& args) {
   options.interpolation = args.interpolation.settings();
   options.procedure2 = register_procedure2(args.strategy);
   options.sigma_l.force_exact = args.exact_sigma_l;
+  options.lost_motion = parse_lost_motion_mode(args.lost_motion.value_or("auto"));
   if (!args.marker_offset.enabled() && !args.marker_offset.robot.empty()) {
     // the joint-space field model
     options.robot = robot_from_args(args.marker_offset.robot, {}, args.marker_offset.links.links());
@@ -104,6 +106,9 @@ void run_register_unchecked(const RegisterArgs& args) {
     j["source"] = args.fiducials;
     j["config"] = args.config ? nlohmann::json(*args.config) : nlohmann::json(nullptr);
     if (args.sigma_rep_mm) j["sigma_rep_mm"] = *args.sigma_rep_mm;  // as given
+    // Asked for by name: said even when it did not enter (register_json holds it when it did).
+    if (args.lost_motion && model.corrector && model.corrector->lost_motion())
+      j["lost_motion"] = io::lost_motion_result_json(*model.corrector->lost_motion());
     j["model"] = args.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(args.output);
     print_json(j);
     return;
@@ -157,6 +162,10 @@ void run_register_unchecked(const RegisterArgs& args) {
                 to_string(model.interpolation.method));
   }
   if (model.corrector && model.corrector->guard()) print_guard(*model.corrector->guard());
+  // The term when it entered, or when --lost-motion asked for it: other cells print what they did.
+  if (model.corrector && model.corrector->lost_motion() &&
+      (model.corrector->lost_motion()->applied || args.lost_motion))
+    print_lost_motion(*model.corrector->lost_motion());
   if (model.orientation_corrector) print_orientation_field(*model.orientation_corrector);
   if (!args.output.empty()) std::printf("  model written to %s\n", args.output.c_str());
 }
@@ -184,6 +193,12 @@ void add_register_command(CLI::App& app) {
   args->marker_offset.add_to(*cmd);
   add_output_option(*cmd, "-o,--output", args->output, "write the model (JSON) here");
   cmd->add_flag("--json", args->json, "print one JSON object instead of the table");
+  not_a_file(*cmd, cmd->add_option("--lost-motion", args->lost_motion,
+                  "the corrector's lost-motion term (gear backlash; needs joints, --robot and "
+                  "approach directions: from_q columns or rows in visiting order): auto (enters "
+                  "when cross-validation finds it clearly better), on or off "
+                  "(docs/joint-space-model.md)"))
+      ->check(CLI::IsMember({"auto", "on", "off"}));
   cmd->add_flag("--exact-sigma-l", args->exact_sigma_l,
                 "sigma_L over all pairs even above 20000 fiducials (quadratic time; by default "
                 "larger sets use 10^7 sampled pairs and say so)");

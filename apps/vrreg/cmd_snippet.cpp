@@ -9,6 +9,8 @@
 #include "serve/snippets.hpp"
 #include "serve/token.hpp"
 #include "vrreg/io/atomic_write.hpp"
+#include "vrreg/io/model_json.hpp"
+#include "vrreg/pipeline/prepared_corrector.hpp"
 
 namespace vrreg::cli {
 namespace {
@@ -16,6 +18,7 @@ namespace {
 struct SnippetArgs {
   std::string language;
   std::string model;
+  std::string model_file;
   std::string connect = "127.0.0.1:30401";
   double timeout_s = 2.0;
   std::string token_file;
@@ -24,9 +27,24 @@ struct SnippetArgs {
   bool pose = false;
 };
 
+// The joints the served model's answers need: those of its robot when it is a joint-space model
+// or has an applied lost-motion term (the joints and where the robot comes from), else 0.
+int joints_the_model_needs(const std::string& path) {
+  auto model = std::make_shared<const RegistrationModel>(io::read_model_json(path));
+  const bool lost_motion = model->corrector && model->corrector->lost_motion() &&
+                           model->corrector->lost_motion()->applied;
+  const PreparedCorrector corrector(model, CorrectOptions{});
+  if (corrector.joints_needed() > 0) return corrector.joints_needed();
+  if (lost_motion && !model->fiducials.empty()) {
+    return static_cast<int>(model->fiducials.front().q_rad.size());
+  }
+  return 0;
+}
+
 void run_snippet(const SnippetArgs& args) {
   serve::SnippetOptions o;
   o.model = args.model;
+  if (!args.model_file.empty()) o.n_joints = joints_the_model_needs(args.model_file);
   const serve::Endpoint at = serve::parse_endpoint(args.connect);
   o.host = at.address;
   o.port = at.port;
@@ -42,6 +60,11 @@ void run_snippet(const SnippetArgs& args) {
     }
     outputs.push_back({args.output, serve::urscript_client(o)});
   } else {
+    if (o.n_joints > 0) {
+      throw InputError("--model-file: the model's answers need the robot's joints and where it "
+                       "comes from, which the KRL function does not send (the URScript's "
+                       "vrreg_correct_joints and the line protocol's joints/from do)");
+    }
     if (args.eki_config.empty()) {
       throw InputError("--eki-config: krl needs the EthernetKRL configuration file (vrreg.xml)");
     }
@@ -65,6 +88,11 @@ void add_snippet_command(CLI::App& app) {
   not_a_file(*cmd, cmd->add_option("--model", args->model,
                                    "the served model's name (as 'vrreg serve' names it)")
                        ->required());
+  add_input_option(*cmd, "--model-file", args->model_file,
+                   "the served model's file: when its answers need the joints (a joint-space "
+                   "model, or one with a lost-motion term), the URScript also has "
+                   "vrreg_correct_joints(p, q, q_from), which sends the joints and those the "
+                   "robot comes from");
   not_a_file(*cmd, cmd->add_option("--connect", args->connect,
                                    "the service's line-protocol address as the robot reaches it "
                                    "(default 127.0.0.1:30401)"));

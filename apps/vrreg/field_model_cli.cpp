@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "field_model_cli.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "option_flags.hpp"
@@ -74,6 +76,17 @@ void print_guard(const CorrectionGuard& guard) {
               guard.applied ? ""
                             : "; every target is answered uncorrected (correction not better "
                               "than none)");
+}
+
+void print_lost_motion(const LostMotionTerm& term) {
+  constexpr double kArcminPerRad = 180.0 * 60.0 / M_PI;
+  std::printf("  lost motion                   %s: %s\n", term.applied ? "applied" : "not applied",
+              term.reason.c_str());
+  for (Eigen::Index j = 0; j < term.play_rad.size(); ++j) {
+    std::printf("    joint %-3lld                   %.3f arcmin (sd %.3f)\n",
+                static_cast<long long>(j + 1), kArcminPerRad * term.play_rad(j),
+                kArcminPerRad * std::sqrt(std::max(term.covariance_rad2(j, j), 0.0)));
+  }
 }
 
 void print_orientation_field(const OrientationCorrector& field) {

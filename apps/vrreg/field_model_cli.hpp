@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "vrreg/correction/correct_targets.hpp"
+#include "vrreg/correction/lost_motion_term.hpp"
 #include "vrreg/correction/orientation_field.hpp"
 #include "vrreg/metrics/uncertainty_calibration.hpp"
 #include "vrreg/pipeline/field_model.hpp"
@@ -26,6 +27,10 @@ const char* why_not_correctable(const TargetCorrection& c);
 /// The guard's line: applied or not, the cross-validated and the uncorrected RMS it compared,
 /// or why it could not judge.
 void print_guard(const CorrectionGuard& guard);
+
+/// register's lines on the lost-motion term: per joint the play in arc-minutes with its sd, and
+/// whether it entered (the cross-validated RMS with and without it).
+void print_lost_motion(const LostMotionTerm& term);
 
 /// register's lines on the orientation field: method, cross-validated and uncorrected RMS angle,
 /// whether it is applied, and the methods compared.

@@ -69,9 +69,11 @@ auto on_points(const py::handle& data, const py::handle& robot, const PointExtra
     VRREG_THROW_UNLESS(robot.is_none() && extras.weights.is_none() && extras.names.is_none() &&
                            extras.configs.is_none() && extras.joints.is_none() &&
                            extras.n_readings.is_none() && extras.sensor_sq_dev.is_none() &&
-                           extras.sensor_q.is_none() && extras.robot_q.is_none(),
+                           extras.sensor_q.is_none() && extras.robot_q.is_none() &&
+                           extras.approach_from_q.is_none() && extras.approach_sign.is_none(),
                        "robot, weights, names, configs, joints, n_readings, sensor_sq_dev, "
-                       "sensor_q and robot_q go with arrays; a Measurements object carries them");
+                       "sensor_q, robot_q, approach_from_q and approach_sign go with arrays; a "
+                       "Measurements object carries them");
     return run(*set);
   }
   const MeasuredPoints points = measured_points(data, robot, extras);
@@ -114,7 +116,8 @@ names, configs, joints: optional per-target extras. sensor_q, robot_q (N, 4) qua
 fiducials must carry orientations). config: evaluate this label only.
 interpolation / cube_edge [m]: override the model's. strategy, joint_norm: Procedure 2 overrides.
 arm: the robot for the 'joint' model (default: the model's), as --robot. refit, exact,
-extrapolate: as correct(). Raises ValueError (vrreg.InputError) on bad input.)doc";
+extrapolate: as correct(). approach_from_q, approach_sign: as correct(). Raises ValueError
+(vrreg.InputError) on bad input.)doc";
 
 constexpr const char* kCorrectDoc =
     R"doc(RRBC-corrects points measured by the sensor (Eq. 7, 8, then mapped with
@@ -130,7 +133,12 @@ the model's; arm: the robot for the 'joint' model (default: the model's). Points
 fiducials keep the uncorrected mapping and a status saying why. The model's fitted corrector is
 used as saved (fit once, correct many): refit=True fits it again, exact=True corrects kriging and
 rbf with the model itself instead of its table. extrapolate=True corrects a field model's points
-outside its support too (status EXTRAPOLATED, with a widened predicted sd).)doc";
+outside its support too (status EXTRAPOLATED, with a widened predicted sd).
+approach_from_q: (N, n_joints) joints the robot comes from to each point [rad] (with joints):
+each joint's approach direction is the sign of joints - approach_from_q, 0 where it does not
+move; or approach_sign: (N, n_joints) the directions, each -1, 0 (unknown) or 1. A model with a
+lost-motion term corrects for the direction; without one (0 x 0), it answers with the term's mean
+over both directions and an sd that covers either. A model without the term ignores them.)doc";
 
 }  // namespace
 
@@ -171,7 +179,8 @@ void bind_pipeline(py::module_& m) {
       "evaluate",
       [](const RegistrationModel& model, const py::object& sensor, const py::object& robot,
          const py::object& names, const py::object& configs, const py::object& joints,
-         const py::object& sensor_q, const py::object& robot_q, std::optional<int> config,
+         const py::object& sensor_q, const py::object& robot_q, const py::object& approach_from_q,
+         const py::object& approach_sign, std::optional<int> config,
          std::optional<std::string> interpolation, std::optional<double> cube_edge,
          std::optional<int> strategy, std::optional<std::string> joint_norm,
          std::optional<PathText> arm, bool refit, bool exact, bool extrapolate) {
@@ -190,6 +199,8 @@ void bind_pipeline(py::module_& m) {
         extras.joints = joints;
         extras.sensor_q = sensor_q;
         extras.robot_q = robot_q;
+        extras.approach_from_q = approach_from_q;
+        extras.approach_sign = approach_sign;
         return on_points(sensor, robot, extras, [&](const auto& points) {
           py::gil_scoped_release nogil;
           return evaluate(model, points, options);
@@ -198,7 +209,8 @@ void bind_pipeline(py::module_& m) {
       py::arg("model"), py::arg("sensor"), py::arg("robot") = py::none(), py::kw_only(),
       py::arg("names") = py::none(), py::arg("configs") = py::none(),
       py::arg("joints") = py::none(), py::arg("sensor_q") = py::none(),
-      py::arg("robot_q") = py::none(), py::arg("config") = py::none(),
+      py::arg("robot_q") = py::none(), py::arg("approach_from_q") = py::none(),
+      py::arg("approach_sign") = py::none(), py::arg("config") = py::none(),
       py::arg("interpolation") = py::none(), py::arg("cube_edge") = py::none(),
       py::arg("strategy") = py::none(), py::arg("joint_norm") = py::none(),
       py::arg("arm") = py::none(), py::arg("refit") = false, py::arg("exact") = false,
@@ -208,7 +220,8 @@ void bind_pipeline(py::module_& m) {
       "correct",
       [](const RegistrationModel& model, const py::object& sensor, const py::object& robot,
          const py::object& names, const py::object& configs, const py::object& joints,
-         const py::object& sensor_q, std::optional<int> config,
+         const py::object& sensor_q, const py::object& approach_from_q,
+         const py::object& approach_sign, std::optional<int> config,
          std::optional<std::string> interpolation, std::optional<double> cube_edge,
          std::optional<PathText> arm, bool refit, bool exact, bool extrapolate) {
         CorrectOptions options;
@@ -223,6 +236,8 @@ void bind_pipeline(py::module_& m) {
         extras.configs = configs;
         extras.joints = joints;
         extras.sensor_q = sensor_q;
+        extras.approach_from_q = approach_from_q;
+        extras.approach_sign = approach_sign;
         return on_points(sensor, robot, extras, [&](const auto& points) {
           py::gil_scoped_release nogil;
           return correct(model, points, options);
@@ -231,6 +246,7 @@ void bind_pipeline(py::module_& m) {
       py::arg("model"), py::arg("sensor"), py::arg("robot") = py::none(), py::kw_only(),
       py::arg("names") = py::none(), py::arg("configs") = py::none(),
       py::arg("joints") = py::none(), py::arg("sensor_q") = py::none(),
+      py::arg("approach_from_q") = py::none(), py::arg("approach_sign") = py::none(),
       py::arg("config") = py::none(), py::arg("interpolation") = py::none(),
       py::arg("cube_edge") = py::none(), py::arg("arm") = py::none(), py::arg("refit") = false,
       py::arg("exact") = false, py::arg("extrapolate") = false, kCorrectDoc);

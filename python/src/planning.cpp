@@ -295,6 +295,25 @@ void bind_planning(py::module_& m) {
       "(N, 3) sensor positions with measured_robot (N, 3) [m]; None: the first batch. The goal is "
       "goal_sd [m] or goal_floor_multiple times the noise floor sqrt(3 (sigma_rep^2 + "
       "noise_sd^2)); noise_sd [m] is one averaged fiducial reading's sd, sigma_opt / sqrt(K).");
+
+  m.def(
+      "volume_part_points",
+      [](const py::object& lower, const py::object& upper, double spacing) {
+        const Eigen::Vector3d lo = vector_from(lower, "lower", 3);
+        const Eigen::Vector3d hi = vector_from(upper, "upper", 3);
+        std::vector<planning::PartPoint> parts = planning::volume_part_points(lo, hi, spacing);
+        Points3 points(3, static_cast<Eigen::Index>(parts.size()));
+        std::vector<std::string> names;
+        for (std::size_t i = 0; i < parts.size(); ++i) {
+          points.col(static_cast<Eigen::Index>(i)) = parts[i].robot_m;
+          names.push_back(parts[i].name);
+        }
+        return py::make_tuple(to_numpy(std::move(points)), names);
+      },
+      py::arg("lower"), py::arg("upper"), py::arg("spacing") = 0.05,
+      "Part points for a work volume, as `vrreg plan-next --volume`: a lattice of `spacing` [m] "
+      "centred in the box lower..upper ((3,) each, METRES, robot base frame). Returns (parts "
+      "(M, 3), names ['v1', ...]) for plan_next.");
 }
 
 }  // namespace vrreg::python

@@ -8,6 +8,7 @@
 
 #include "arrays.hpp"
 #include "vrreg/core/check.hpp"
+#include "vrreg/core/measurement.hpp"
 #include "vrreg/core/rotation.hpp"
 
 namespace vrreg::python {
@@ -79,6 +80,46 @@ std::vector<Eigen::Quaterniond> quaternions_from(const py::handle& array, const 
   return out;
 }
 
+// The approach signs (n_joints x N) from approach_from_q or approach_sign, checked against the
+// joints and named as the caller named them; 0 x 0 when neither is given.
+Eigen::MatrixXd approach_signs_of(const MeasuredPoints& p, const PointExtras& extras) {
+  const bool from = !extras.approach_from_q.is_none();
+  const bool signs = !extras.approach_sign.is_none();
+  if (!from && !signs) return {};
+  if (from && signs) throw InputError("approach_from_q, approach_sign: give one of them, not both");
+  const char* what = from ? "approach_from_q" : "approach_sign";
+  const Eigen::MatrixXd values =
+      rows_from(from ? extras.approach_from_q : extras.approach_sign, what, -1, -1);
+  check_count(what, values.cols(), p.size());
+  check_finite(what, values);
+  if (from && p.joints_rad.cols() == 0) {
+    throw InputError("approach_from_q: needs joints (the approach sign is that of joints - from)");
+  }
+  if (p.joints_rad.cols() > 0 && values.rows() != p.joints_rad.rows()) {
+    throw InputError(fmt::format("{}: {} joints per row, joints has {}", what, values.rows(),
+                                 p.joints_rad.rows()));
+  }
+  if (!from) {
+    for (Eigen::Index i = 0; i < values.cols(); ++i) {
+      for (Eigen::Index j = 0; j < values.rows(); ++j) {
+        const double v = values(j, i);
+        if (v != -1.0 && v != 0.0 && v != 1.0) {
+          throw InputError(
+              fmt::format("approach_sign: row {} holds {}; a sign is -1, 0 or 1", i, v));
+        }
+      }
+    }
+    return values + Eigen::MatrixXd::Zero(values.rows(), values.cols());  // no -0
+  }
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(values.rows(), values.cols());
+  for (Eigen::Index i = 0; i < values.cols(); ++i) {
+    Eigen::VectorXd sign = Eigen::VectorXd::Zero(values.rows());
+    update_approach_sign(values.col(i), p.joints_rad.col(i), sign);
+    out.col(i) = sign;
+  }
+  return out;
+}
+
 }  // namespace
 
 MeasuredPoints measured_points(const py::handle& sensor, const py::handle& robot,
@@ -105,6 +146,7 @@ MeasuredPoints measured_points(const py::handle& sensor, const py::handle& robot
   if (!extras.sensor_q.is_none()) p.q_sensor_marker = quaternions_from(extras.sensor_q, "sensor_q");
   if (!extras.robot_q.is_none()) p.q_robot_marker = quaternions_from(extras.robot_q, "robot_q");
   check_like_python(p, extras);
+  p.approach_sign = approach_signs_of(p, extras);
   return p;
 }
 

@@ -20,6 +20,9 @@ struct PointExtras {
   py::object sensor_sq_dev = py::none();  ///< (N, 3) per-axis sums of squared deviations [m^2]
   py::object sensor_q = py::none();  ///< (N, 4) measured orientations, sensor frame (x, y, z, w)
   py::object robot_q = py::none();   ///< (N, 4) commanded orientations, robot frame (x, y, z, w)
+  /// (N, n_joints) joints the robot comes from [rad]: the approach sign is that of joints - from
+  py::object approach_from_q = py::none();
+  py::object approach_sign = py::none();  ///< (N, n_joints) approach signs, each -1, 0 or 1
 };
 
 /// sensor (N, 3) [m], robot (N, 3) [m] or None, and the extras, copied once into the library's

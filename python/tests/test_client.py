@@ -99,6 +99,31 @@ def test_client_refusals_raise(service):
             client.correct("cell", [1.0, 2.0])
 
 
+def test_client_sends_the_approach_direction(service, example_cell):
+    # The example cell's model has no lost-motion term: a direction changes nothing; malformed
+    # directions are refused by the client (ValueError) or by the service (code 1).
+    _, _, port, _ = service
+    cell = vrreg.read_measurements(example_cell)
+    p_mm = 1e3 * cell.sensor[[i for i, r in enumerate(cell.roles) if r == "target"][0]]
+    q = [0.1, -1.2, 1.5, -1.9, -1.57, 0.25]
+    with vrreg.Client(port=port) as client:
+        plain = client.correct("cell", p_mm, joints_rad=q, extrapolate=True)
+        came_from = client.correct("cell", p_mm, joints_rad=q, from_rad=np.add(q, 0.1),
+                                   extrapolate=True)
+        signs = client.correct("cell", p_mm, joints_rad=q, approach=[1, -1, 0, 1, -1, 0],
+                               extrapolate=True)
+        for other in (came_from, signs):
+            np.testing.assert_array_equal(other.robot_mm, plain.robot_mm)
+            assert other.sd_mm == plain.sd_mm
+        with pytest.raises(ValueError, match="needs joints_rad"):
+            client.correct("cell", p_mm, from_rad=q)
+        with pytest.raises(ValueError, match="-1, 0 or 1"):
+            client.correct("cell", p_mm, joints_rad=q, approach=[2, 0, 0, 0, 0, 0])
+        with pytest.raises(vrreg.ServiceError) as e:
+            client.correct("cell", p_mm, joints_rad=q, from_rad=q[:5])
+        assert e.value.code == 1
+
+
 @pytest.fixture(scope="module")
 def pose_service(tmp_path_factory):
     path = _vrreg_command()

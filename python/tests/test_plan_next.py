@@ -104,3 +104,21 @@ def test_plan_next_refuses_bad_input():
         vrreg.plan_next(parts, NAMES, goal_sd=1e-4, robot="ur10")
     far = vrreg.plan_next(np.array([[2.0, 0.0, 0.2]]), ["far"], goal_sd=1e-4)
     assert not far.ok and "far" in far.message
+
+
+def test_volume_part_points_fill_the_box_and_plan():
+    # A 200 x 100 x 0 mm box at 50 mm: 5 x 3 x 1 nodes, centred, x fastest.
+    parts, names = vrreg.volume_part_points([0.40, -0.15, 0.25], [0.60, -0.05, 0.25], 0.05)
+    assert parts.shape == (15, 3)
+    assert names[0] == "v1" and names[-1] == "v15"
+    np.testing.assert_allclose(parts[0], [0.40, -0.15, 0.25], atol=1e-12)
+    np.testing.assert_allclose(parts[1], [0.45, -0.15, 0.25], atol=1e-12)
+    np.testing.assert_allclose(parts[-1], [0.60, -0.05, 0.25], atol=1e-12)
+    # A 120 mm extent at 50 mm: 3 nodes with 10 mm left at each end.
+    parts, _ = vrreg.volume_part_points([0.40, -0.15, 0.25], [0.52, -0.15, 0.25], 0.05)
+    np.testing.assert_allclose(parts[:, 0], [0.41, 0.46, 0.51], atol=1e-12)
+    first = vrreg.plan_next(*vrreg.volume_part_points([0.40, -0.15, 0.22], [0.50, -0.05, 0.29]),
+                            goal_sd=1e-4, batch=6)
+    assert len(first) == 12 and first.space_filling
+    with pytest.raises(vrreg.InputError):
+        vrreg.volume_part_points([0.5, 0, 0], [0.4, 0, 0], 0.05)

@@ -43,6 +43,7 @@ from ._vrreg import (
     sigma_noise,
     simulate,
     update,
+    volume_part_points,
 )
 from . import _vrreg
 from .client import Client, Correction, ServiceError
@@ -61,4 +62,5 @@ __all__ = [
     "estimate_marker_offset", "evaluate", "fk", "ik", "improvement", "load_model", "model_from_json", "plan",
     "plan_next", "read_measurements", "register", "reproduce", "rho", "rigid_body_statistics", "robots",
     "ServiceError", "sigma_noise", "simulate", "UpdateResult", "check", "update",
+    "volume_part_points",
 ]

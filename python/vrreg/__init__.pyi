@@ -357,7 +357,8 @@ def register(sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = No
 def evaluate(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = None,
              *, names: Optional[Sequence[str]] = None, configs: Optional[_ArrayLike] = None,
              joints: Optional[_ArrayLike] = None, sensor_q: Optional[_ArrayLike] = None,
-             robot_q: Optional[_ArrayLike] = None, config: Optional[int] = None,
+             robot_q: Optional[_ArrayLike] = None, approach_from_q: Optional[_ArrayLike] = None,
+             approach_sign: Optional[_ArrayLike] = None, config: Optional[int] = None,
              interpolation: Optional[str] = None, cube_edge: Optional[float] = None,
              strategy: Optional[int] = None, joint_norm: Optional[str] = None,
              arm: Optional[_Path] = None, refit: bool = False,
@@ -366,10 +367,16 @@ def evaluate(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_A
 def correct(model: Model, sensor: _ArrayLike | Measurements, robot: Optional[_ArrayLike] = None,
             *, names: Optional[Sequence[str]] = None, configs: Optional[_ArrayLike] = None,
             joints: Optional[_ArrayLike] = None, sensor_q: Optional[_ArrayLike] = None,
+            approach_from_q: Optional[_ArrayLike] = None,
+            approach_sign: Optional[_ArrayLike] = None,
             config: Optional[int] = None, interpolation: Optional[str] = None,
             cube_edge: Optional[float] = None, arm: Optional[_Path] = None, refit: bool = False,
             exact: bool = False, extrapolate: bool = False) -> CorrectResult:
-    """RRBC-corrected robot-frame positions to command (Eq. 7, 8). Metres."""
+    """RRBC-corrected robot-frame positions to command (Eq. 7, 8). Metres.
+
+    approach_from_q (N, n_joints) [rad] with joints, or approach_sign (N, n_joints) in
+    {-1, 0, 1}: each point's approach direction per joint, for a model with a lost-motion term.
+    """
 def read_measurements(path: _Path, *, require_robot: bool = True) -> Measurements: ...
 def check(model: Model, monitors: Measurements, *, false_alarm_rate: float = 0.01,
           visit_sd: Optional[float] = None, remeasure: int = 10) -> CheckResult:
@@ -408,6 +415,9 @@ def plan_next(parts: _ArrayLike, names: Sequence[str],
               batch: int = 8, budget: int = 64, candidate_spacing: float = 0.02,
               margin: float = 0.02, joint_norm: str = "l2") -> PlanNext:
     """Adaptive planning (docs/adaptive.md): the next batch of fiducials [m] and whether to stop."""
+def volume_part_points(lower: _ArrayLike, upper: _ArrayLike,
+                       spacing: float = 0.05) -> tuple[np.ndarray, list[str]]:
+    """Part points for a work volume [m]: a lattice centred in the box (plan-next --volume)."""
 def simulate(testbed: str, dataset: Optional[str] = None, *, plan: Optional[Plan] = None,
              seed: int = 1, rigid_body_mm: float = 0.0) -> Simulation: ...
 def reproduce(seed: int = 1, *, ur5: bool = True, lwr4: bool = True) -> dict[str, Any]: ...

@@ -70,12 +70,16 @@ class Client:
     def correct(self, model: str, sensor_mm: npt.ArrayLike, *,
                 joints_rad: Optional[npt.ArrayLike] = None, config: Optional[int] = None,
                 extrapolate: bool = False,
-                sensor_q: Optional[npt.ArrayLike] = None) -> Correction:
+                sensor_q: Optional[npt.ArrayLike] = None,
+                from_rad: Optional[npt.ArrayLike] = None,
+                approach: Optional[npt.ArrayLike] = None) -> Correction:
         """Corrects one point measured in the sensor frame [mm] with the served model `model`;
         `joints_rad` (the commanded joints) for the joint-space model, `config` (the arm
         configuration label) for models built with Procedure 2 strategies; `sensor_q` (the
         rigid-body marker's measured orientation, sensor frame, unit quaternion x, y, z, w) to
-        have the orientation corrected too (models registered with orientations)."""
+        have the orientation corrected too (models registered with orientations); `from_rad`
+        (the joints the robot comes from, with `joints_rad`) or `approach` (one sign per joint,
+        -1, 0 or 1): the approach direction, for a model with a lost-motion term."""
         p = np.asarray(sensor_mm, dtype=np.float64).reshape(-1)
         if p.shape != (3,):
             raise ValueError(f"sensor_mm: expected 3 coordinates, got shape {np.shape(sensor_mm)}")
@@ -85,6 +89,18 @@ class Client:
         if joints_rad is not None:
             q = np.asarray(joints_rad, dtype=np.float64).reshape(-1)
             fields += ["joints"] + [_number(v, "joints_rad") for v in q]
+        if from_rad is not None and approach is not None:
+            raise ValueError("from_rad, approach: give one of them, not both")
+        if from_rad is not None:
+            if joints_rad is None:
+                raise ValueError("from_rad: needs joints_rad (the approach is joints - from)")
+            f = np.asarray(from_rad, dtype=np.float64).reshape(-1)
+            fields += ["from"] + [_number(v, "from_rad") for v in f]
+        if approach is not None:
+            signs = np.asarray(approach, dtype=np.float64).reshape(-1)
+            if not np.all(np.isin(signs, (-1.0, 0.0, 1.0))):
+                raise ValueError(f"approach: each sign is -1, 0 or 1, got {signs.tolist()}")
+            fields += ["approach"] + [str(int(v)) for v in signs]
         if extrapolate:
             fields.append("extrapolate")
         if sensor_q is not None:

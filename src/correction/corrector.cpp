@@ -11,6 +11,7 @@
 
 #include "buffers.hpp"
 #include "far_field.hpp"
+#include "lost_motion_stage.hpp"
 #include "method_support.hpp"
 #include "method_tabulated.hpp"
 #include "point_index.hpp"
@@ -58,18 +59,21 @@ const Eigen::MatrixXd& no_joints() {
 // does not stand in: on a small lattice it predicts only the few interior fiducials, with a
 // Delaunay mesh much worse than the stencil it would judge (the 27-fiducial cube held the
 // octuplet back where it halves the error).
-CorrectionGuard guard_of(const CorrectorData& data, const MethodSettings& settings,
-                         const CorrectorOptions& options,
+// `given`: the fiducials as measured, against whose corrections the guard judges; `data`: what the
+// method fitted (without the lost-motion term when it entered, so its held-out errors are the
+// whole correction's).
+CorrectionGuard guard_of(const CorrectorData& given, const CorrectorData& data,
+                         const MethodSettings& settings, const CorrectorOptions& options,
                          const std::optional<CrossValidationRow>& judged,
                          InterpolationMethod fitted) {
   const std::vector<Eigen::Index> units = fold_units(data.fiducials_robot_m);
-  if (judged) return judge_correction(*judged, data, units);
+  if (judged) return judge_correction(*judged, given, units);
   const std::vector<int> fold_of = assign_folds(units, options.cv_folds, options.cv_seed);
   const bool own = fitted == InterpolationMethod::kTrilinear ||
                    fitted == InterpolationMethod::kScattered;
   const InterpolationMethod judge = own ? fitted : InterpolationMethod::kTrilinear;
   return judge_correction(cross_validate(judge, data, settings, fold_of, units, options.cv_folds),
-                          data, units);
+                          given, units);
 }
 
 }  // namespace
@@ -93,7 +97,19 @@ CorrectionQuery::CorrectionQuery(const ConstPoints3Ref& sensor_m_,
     : sensor_m(sensor_m_),
       robot_nominal_m(robot_nominal_m_),
       joints_rad(joints_rad_),
-      sequence(sequence_) {}
+      sequence(sequence_),
+      approach_sign(no_joints()) {}
+
+CorrectionQuery::CorrectionQuery(const ConstPoints3Ref& sensor_m_,
+                                 const ConstPoints3Ref& robot_nominal_m_,
+                                 const Eigen::Ref<const Eigen::MatrixXd>& joints_rad_,
+                                 std::span<const std::size_t> sequence_,
+                                 const Eigen::Ref<const Eigen::MatrixXd>& approach_sign_)
+    : sensor_m(sensor_m_),
+      robot_nominal_m(robot_nominal_m_),
+      joints_rad(joints_rad_),
+      sequence(sequence_),
+      approach_sign(approach_sign_) {}
 
 struct Corrector::Impl {
   std::unique_ptr<const FittedMethod> fitted;
@@ -105,6 +121,8 @@ struct Corrector::Impl {
   bool tabulated = false;
   std::optional<CrossValidation> cross_validation;
   std::optional<CorrectionGuard> guard;
+  std::optional<LostMotionTerm> lost_motion;
+  std::optional<kinematics::SerialChain> robot;  ///< the term's arm, when the term is applied
   SdSource sd_source = SdSource::kNone;
   double cv_rms_m = 0.0;
   Eigen::VectorXd cv_squared_error_m2;  ///< per fiducial, NaN where not predicted (kLocalCv)
@@ -254,6 +272,37 @@ struct Corrector::Impl {
     }
   }
 
+  /// Adds the applied lost-motion term to the points the method corrected (or extrapolated), at
+  /// their joints and approach directions, and its variance to their sd.
+  void add_lost_motion(const CorrectionQuery& query, TargetCorrection& out) const {
+    std::vector<Eigen::Index> corrected;
+    for (std::size_t i = 0; i < out.stencils.size(); ++i) {
+      const StencilStatus status = out.stencils[i].status;
+      if (status == StencilStatus::kOk || status == StencilStatus::kExtrapolated)
+        corrected.push_back(static_cast<Eigen::Index>(i));
+    }
+    const auto k = static_cast<Eigen::Index>(corrected.size());
+    const bool known = query.approach_sign.size() > 0;
+    Eigen::MatrixXd q_rad(query.joints_rad.rows(), k);
+    Eigen::MatrixXd sign(known ? query.approach_sign.rows() : 0, known ? k : 0);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      q_rad.col(j) = query.joints_rad.col(corrected[static_cast<std::size_t>(j)]);
+      if (known) sign.col(j) = query.approach_sign.col(corrected[static_cast<std::size_t>(j)]);
+    }
+    const detail::LostMotionPrediction term =
+        detail::predict_lost_motion(*robot, T_robot_sensor, *lost_motion, q_rad, sign);
+    for (Eigen::Index j = 0; j < k; ++j) {
+      const Eigen::Index i = corrected[static_cast<std::size_t>(j)];
+      out.corrections_sensor_m.col(i) += term.corrections_sensor_m.col(j);
+      out.corrected_sensor_m.col(i) = query.sensor_m.col(i) + out.corrections_sensor_m.col(i);
+      out.corrected_robot_m.col(i) =
+          T_robot_sensor.apply(Eigen::Vector3d(out.corrected_sensor_m.col(i)));
+      if (out.predicted_sd_m.size() > 0)
+        out.predicted_sd_m(i) = std::sqrt(out.predicted_sd_m(i) * out.predicted_sd_m(i) +
+                                          term.variance_m2(j));
+    }
+  }
+
   /// sqrt of the mean held-out squared error of the fiducials nearest `point_robot_m`.
   [[nodiscard]] double local_sd_m(const Eigen::Vector3d& point_robot_m) const {
     const std::vector<Eigen::Index> near =
@@ -266,11 +315,39 @@ struct Corrector::Impl {
 
 Corrector::Corrector(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
 
-std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
+std::optional<Corrector> Corrector::try_fit(const CorrectorData& given,
                                             const CorrectorOptions& options, std::string& why) {
   options.validate();
-  data.validate();
+  given.validate();
   auto impl = std::make_shared<Impl>();
+  // The lost-motion stage first: when it enters, the method fits what the term leaves.
+  std::optional<CorrectorData> staged;
+  if (options.lost_motion != LostMotionMode::kOff) {
+    const std::string unavailable = detail::lost_motion_unavailable(given);
+    VRREG_THROW_UNLESS(unavailable.empty() || options.lost_motion != LostMotionMode::kOn,
+                       "lost motion cannot be fitted: " << unavailable);
+    // A large cell's (a scanner's) plays would be a least-squares problem of 3N x 36 numbers:
+    // auto leaves the term to be asked for.
+    const bool large =
+        given.size() > kLargeCellFiducials && options.lost_motion == LostMotionMode::kAuto;
+    if (unavailable.empty() && !large) {
+      const MethodSettings judge_settings =
+          method_settings(options.interpolation, options.nearest_configuration);
+      try {
+        impl->lost_motion = detail::fit_lost_motion_term(
+            given, options.lost_motion, judge_settings, options.cv_folds, options.cv_seed,
+            options.interpolation.method);
+      } catch (const InputError&) {
+        // Too few fiducials for the plays and the trend: auto goes on without the term.
+        if (options.lost_motion == LostMotionMode::kOn) throw;
+      }
+      if (impl->lost_motion && impl->lost_motion->applied) {
+        staged = detail::without_lost_motion(given, impl->lost_motion->play_rad);
+        impl->robot = given.robot;
+      }
+    }
+  }
+  const CorrectorData& data = staged ? *staged : given;
   impl->T_robot_sensor = data.T_robot_sensor;
   impl->requested = options.interpolation;
   impl->nearest_configuration = options.nearest_configuration;
@@ -357,7 +434,8 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& data,
     }
     impl->fitted = std::move(stencils.fitted);
   }
-  if (options.guard) impl->guard = guard_of(data, settings, options, judged, impl->fitted->method());
+  if (options.guard)
+    impl->guard = guard_of(given, data, settings, options, judged, impl->fitted->method());
   impl->index_known(data);
   impl->far.emplace(data);
   const InterpolationMethod fitted = impl->fitted->method();
@@ -386,10 +464,26 @@ Corrector Corrector::fit(const CorrectorData& data, const CorrectorOptions& opti
 }
 
 
-Corrector Corrector::restore(const SavedCorrector& saved, const CorrectorData& data) {
-  data.validate();
+Corrector Corrector::restore(const SavedCorrector& saved, const CorrectorData& given) {
+  given.validate();
   saved.requested.validate();
   auto impl = std::make_shared<Impl>();
+  impl->lost_motion = saved.lost_motion;
+  std::optional<CorrectorData> staged;
+  if (saved.lost_motion && saved.lost_motion->applied) {
+    const std::string unavailable = detail::lost_motion_unavailable(given);
+    VRREG_THROW_UNLESS(unavailable.empty(),
+                       "the saved corrector corrects lost motion, but " << unavailable);
+    VRREG_THROW_UNLESS(saved.lost_motion->play_rad.size() == given.joints_rad.rows() &&
+                           saved.lost_motion->covariance_rad2.rows() == given.joints_rad.rows() &&
+                           saved.lost_motion->covariance_rad2.cols() == given.joints_rad.rows(),
+                       "the saved lost-motion term has " << saved.lost_motion->play_rad.size()
+                                                         << " plays for "
+                                                         << given.joints_rad.rows() << " joints");
+    staged = detail::without_lost_motion(given, saved.lost_motion->play_rad);
+    impl->robot = given.robot;
+  }
+  const CorrectorData& data = staged ? *staged : given;
   impl->T_robot_sensor = data.T_robot_sensor;
   impl->requested = saved.requested;
   impl->nearest_configuration = saved.nearest_configuration;
@@ -438,6 +532,7 @@ SavedCorrector Corrector::save() const {
   out.sd_source = impl_->sd_source;
   out.cv_rms_m = impl_->cv_rms_m;
   out.cv_squared_error_m2 = impl_->cv_squared_error_m2;
+  out.lost_motion = impl_->lost_motion;
   return out;
 }
 
@@ -462,6 +557,12 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
   VRREG_THROW_UNLESS(query.sequence.empty() || query.sequence.size() == static_cast<std::size_t>(n),
                      "got " << query.sequence.size() << " sequence numbers for " << n
                             << " targets");
+
+  const bool with_lost_motion =
+      m.lost_motion && m.lost_motion->applied && (!m.guard || m.guard->applied);
+  VRREG_THROW_UNLESS(!with_lost_motion || query.joints_rad.cols() == n,
+                     "the model corrects lost motion: give the joints (and from_q or the visiting "
+                     "order) of every point");
 
   TargetCorrection out;
   out.method_used = method.method();
@@ -546,13 +647,19 @@ TargetCorrection Corrector::correct(const CorrectionQuery& query) const {
   out.corrections_sensor_m = std::move(p.corrections_sensor_m);
   out.n_flagged = n_flagged.load();
   if (query.extrapolate && applied && out.n_flagged > 0) m.extrapolate(query, out);
+  if (with_lost_motion) m.add_lost_motion(query, out);
   return out;
 }
 
 InterpolationMethod Corrector::method() const { return impl_->fitted->method(); }
 const InterpolationSettings& Corrector::requested() const { return impl_->requested; }
 std::string Corrector::describe() const { return impl_->fitted->describe(); }
-MethodNeeds Corrector::needs() const { return impl_->fitted->needs(); }
+MethodNeeds Corrector::needs() const {
+  MethodNeeds needs = impl_->fitted->needs();
+  // The lost-motion term is evaluated at the commanded joints.
+  if (impl_->lost_motion && impl_->lost_motion->applied) needs.joints = true;
+  return needs;
+}
 const std::optional<kinematics::JointNorm>& Corrector::nearest_configuration() const {
   return impl_->nearest_configuration;
 }
@@ -561,6 +668,9 @@ const std::optional<CrossValidation>& Corrector::cross_validation() const {
   return impl_->cross_validation;
 }
 const std::optional<CorrectionGuard>& Corrector::guard() const { return impl_->guard; }
+const std::optional<LostMotionTerm>& Corrector::lost_motion() const {
+  return impl_->lost_motion;
+}
 bool Corrector::applied() const { return !impl_->guard || impl_->guard->applied; }
 std::optional<Eigen::VectorXd> Corrector::joint_angle_errors_rad(
     const Eigen::Ref<const Eigen::VectorXd>& joints_rad) const {

@@ -32,12 +32,14 @@ CorrectorData CorrectorData::subset(const std::vector<Eigen::Index>& keep) const
   out.registered_robot_m.resize(3, n);
   out.corrections_sensor_m.resize(3, n);
   if (has_joints()) out.joints_rad.resize(joints_rad.rows(), n);
+  if (has_approach()) out.approach_sign.resize(approach_sign.rows(), n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Eigen::Index j = keep[static_cast<std::size_t>(i)];
     out.fiducials_robot_m.col(i) = fiducials_robot_m.col(j);
     out.registered_robot_m.col(i) = registered_robot_m.col(j);
     out.corrections_sensor_m.col(i) = corrections_sensor_m.col(j);
     if (has_joints()) out.joints_rad.col(i) = joints_rad.col(j);
+    if (has_approach()) out.approach_sign.col(i) = approach_sign.col(j);
     if (!sequence.empty()) out.sequence.push_back(sequence[static_cast<std::size_t>(j)]);
     if (!configs.empty()) out.configs.push_back(configs[static_cast<std::size_t>(j)]);
   }
@@ -72,6 +74,13 @@ void CorrectorData::validate() const {
                      "the fiducials' joints are " << joints_rad.rows() << " x "
                                                   << joints_rad.cols() << " for " << n
                                                   << " fiducials, or not finite");
+  VRREG_THROW_UNLESS(!has_approach() || (approach_sign.rows() == joints_rad.rows() &&
+                                         approach_sign.cols() == n &&
+                                         (approach_sign.array().abs() <= 1.0).all()),
+                     "the fiducials' approach directions are "
+                         << approach_sign.rows() << " x " << approach_sign.cols() << " for "
+                         << joints_rad.rows() << " joints x " << n
+                         << " fiducials, or not signs (-1, 0, +1)");
 }
 
 }  // namespace vrreg

@@ -44,6 +44,7 @@ CorrectorData tangent_data(const CorrectorData& data, const std::vector<Eigen::M
         rotation_log(rotations[static_cast<std::size_t>(j)] * mean.transpose());
   }
   tangent.noise_sd_m = noise_sd_rad;
+  tangent.approach_sign.resize(0, 0);  // lost motion is a position term: no stage on rotations
   return tangent;
 }
 
@@ -218,6 +219,7 @@ OrientationCorrector OrientationCorrector::fit(const Corrector& positions,
   out.mean_ = rotation_mean(rotations);
   CorrectorData tangent = tangent_data(data, rotations, out.mean_, noise_sd_rad);
   CorrectorOptions options;
+  options.lost_motion = LostMotionMode::kOff;
   options.interpolation = positions.requested();
   options.nearest_configuration = positions.nearest_configuration();
   options.tabulate = positions.tabulated();

@@ -90,6 +90,28 @@ MeasurementSet first_readings(const MeasurementSet& set) {
   return out;
 }
 
+// The lost-motion cells: A1's half with x <= 125 mm, positions only (two A1-sized cells would
+// double the run's time).
+void beyond_lost_motion(const BeyondOptions& o, const simulation::Testbed& ur5,
+                        std::vector<BeyondTable>& out) {
+  const double a1_step_m = simulation::grid_spec(Dataset::kA1).step_m;
+  simulation::TestbedErrorModel base = o.ur5_errors.value_or(ur5.default_errors);
+  base.tracker.rigid_body_radius_m = 0.0;
+  for (const bool mixed : {false, true}) {
+    const Twin full = simulate_twin(ur5, Dataset::kA1, o.seed, lost_motion_errors(base, mixed), 0.0);
+    // Targets with every octuplet corner inside the half (the paper's row applies to all).
+    const Twin half = subset(full, "x <= 125 mm", [](const Eigen::Vector3i& n, Role r) {
+      return n.x() <= (r == Role::kTarget ? 4 : 5);
+    });
+    const std::string key = mixed ? "A1_mixed" : "A1_backlash";
+    const std::string what = mixed ? "A1 half, lost motion + gravity + thermal"
+                                   : "A1 half, lost motion (backlash)";
+    append(out, beyond_tables(half.measured, half.noise_free, ur5.nominal, ur5.sigma_rep_spec_m,
+                              {{key, what, all_positions(half.measured)}}, 2.0 * a1_step_m,
+                              o.methods));
+  }
+}
+
 bool all_even(const Eigen::Vector3i& n) { return n.x() % 2 == 0 && n.y() % 2 == 0 && n.z() % 2 == 0; }
 
 void beyond_ur5(const BeyondOptions& o, const std::function<void()>& on_step,
@@ -120,6 +142,10 @@ void beyond_ur5(const BeyondOptions& o, const std::function<void()>& on_step,
   });
   append(out, tables(cube, "A1_cube27", "A1, 27 fiducials around p04_06_04", 2.0 * a1_step_m));
   beyond_step(on_step);
+  if (o.lost_motion) {
+    beyond_lost_motion(o, ur5, out);
+    beyond_step(on_step);
+  }
 
   const Twin a2 = simulate_twin(ur5, Dataset::kA2, o.seed, o.ur5_errors, 0.0);
   append(out, tables(a2, "A2", "A2: all fiducials, octuplet a = 25 mm",
@@ -187,8 +213,25 @@ void beyond_lwr4(const BeyondOptions& o, const std::function<void()>& on_step,
 
 }  // namespace
 
+simulation::TestbedErrorModel lost_motion_errors(simulation::TestbedErrorModel base, bool mixed) {
+  constexpr double kArcmin = M_PI / (180.0 * 60.0);
+  base.robot.lost_motion_rad = {0.8 * kArcmin, 0.2 * kArcmin, 0.15 * kArcmin,
+                                0.7 * kArcmin, 0.6 * kArcmin, 0.4 * kArcmin};
+  if (!mixed) {
+    base.robot.transmission_amplitude_rad.clear();
+    base.robot.transmission_period_rad.clear();
+    return base;
+  }
+  base.robot.compliance = true;
+  base.robot.link_mass_kg = {3.7, 8.393, 2.275, 1.219, 1.219, 0.1879};  // UR5 datasheet
+  base.robot.joint_stiffness_nm_per_rad = {1e5, 1e5, 1e5, 3e4, 3e4, 3e4};
+  base.robot.payload_kg = 0.2;
+  base.robot.link_growth = 3.0 * 2.3e-5;
+  return base;
+}
+
 int beyond_steps(const BeyondOptions& options) {
-  return (options.ur5 ? 3 : 0) + (options.lwr4 ? 1 : 0);
+  return (options.ur5 ? 3 + (options.lost_motion ? 1 : 0) : 0) + (options.lwr4 ? 1 : 0);
 }
 
 std::vector<BeyondTable> run_beyond_paper(const BeyondOptions& options,

@@ -10,6 +10,7 @@
 
 #include "base64_doubles.hpp"
 #include "guard_json.hpp"
+#include "lost_motion_json.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/kinematics/configuration_order.hpp"
 
@@ -399,6 +400,9 @@ ojson corrector_json(const SavedCorrector& saved, const std::string& fiducials_f
   }
   if (saved.cross_validation) out["cross_validation"] = table_json(*saved.cross_validation);
   if (saved.guard) out["guard"] = guard_json(*saved.guard);
+  // A term that did not enter changes no correction: kept out, so the file is what it was.
+  if (saved.lost_motion && saved.lost_motion->applied)
+    out["lost_motion"] = lost_motion_json(*saved.lost_motion);
   out["state"] = state_json(saved.state);
   // What was fitted is checked when read back; a method that keeps no state (octuplet,
   // scattered, trilinear) is rebuilt from the fiducials themselves.
@@ -448,6 +452,10 @@ SavedCorrector read_corrector(const json& item, const std::string& path, const J
         read_table(item.at("cross_validation"), join_path(path, "cross_validation"), f);
   }
   if (item.contains("guard")) out.guard = read_guard(item.at("guard"), join_path(path, "guard"), f);
+  if (item.contains("lost_motion")) {
+    out.lost_motion =
+        read_lost_motion(item.at("lost_motion"), join_path(path, "lost_motion"), f);
+  }
   const json& state = f.member(item, path, "state");
   out.state = read_state(state, join_path(path, "state"), to_string(out.method), f);
   check_state_is_the_methods(state, out.method, path, f);

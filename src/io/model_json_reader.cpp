@@ -100,6 +100,13 @@ Location read_fiducial(const json& item, const std::string& path, const detail::
     loc.source_line = static_cast<std::size_t>(line);
   }
   if (item.contains("q_rad")) loc.q_rad = f.numbers(item, path, "q_rad", -1);
+  if (item.contains("approach_sign")) {
+    loc.approach_sign = f.numbers(item, path, "approach_sign", static_cast<int>(loc.q_rad.size()));
+    for (const double v : loc.approach_sign) {
+      if (v != -1.0 && v != 0.0 && v != 1.0)
+        f.fail(detail::join_path(path, "approach_sign"), "expected signs -1, 0 or 1");
+    }
+  }
   const auto quaternion = [&](const char* key) {
     const std::vector<double> c = f.numbers(item, path, key, 4);  // x, y, z, w
     const Eigen::Quaterniond q(c[3], c[0], c[1], c[2]);

@@ -33,7 +33,9 @@ ordered_json optional_int(const std::optional<int>& value) {
   return value ? ordered_json(*value) : ordered_json(nullptr);
 }
 
-ordered_json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m) {
+// `approach`: with the fiducial's approach directions (a corrector with a lost-motion term reads
+// them when restored).
+ordered_json fiducial_json(const Location& f, const Eigen::Vector3d& correction_m, bool approach) {
   ordered_json out = ordered_json::object();
   out["point"] = f.point;
   out["config"] = optional_int(f.config);
@@ -46,6 +48,11 @@ ordered_json fiducial_json(const Location& f, const Eigen::Vector3d& correction_
     ordered_json q = ordered_json::array();
     for (const double v : f.q_rad) q.push_back(finite(v, "fiducial q_rad"));
     out["q_rad"] = std::move(q);
+  }
+  if (approach && !f.approach_sign.empty()) {
+    ordered_json s = ordered_json::array();
+    for (const double v : f.approach_sign) s.push_back(static_cast<int>(v));
+    out["approach_sign"] = std::move(s);
   }
   // Rigid-body markers only: a sphere's fiducials keep their keys (orientation_field.hpp).
   const auto quaternion = [](const Eigen::Quaterniond& q, const char* what) {
@@ -139,10 +146,15 @@ std::string format_model_json(const RegistrationModel& model) {
       {"method", to_string(model.interpolation.method)},
       {"cube_m", finite(model.interpolation.cube_edge_m, "cube_m")},
       {"match_tolerance_m", finite(model.interpolation.match_tolerance_m, "match_tolerance_m")}};
+  // Only a model whose corrector applies a lost-motion term keeps the approach directions: the
+  // other models' files stay as they were.
+  const bool approach = model.corrector && model.corrector->lost_motion() &&
+                        model.corrector->lost_motion()->applied;
   ordered_json fiducials = ordered_json::array();
   for (std::size_t j = 0; j < model.fiducials.size(); ++j) {
-    fiducials.push_back(fiducial_json(
-        model.fiducials[j], model.corrections_sensor_m.col(static_cast<Eigen::Index>(j))));
+    fiducials.push_back(fiducial_json(model.fiducials[j],
+                                      model.corrections_sensor_m.col(static_cast<Eigen::Index>(j)),
+                                      approach));
   }
   // The correctors were fitted on these fiducials: the reader refuses them once they changed.
   const std::string fiducials_fingerprint =

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "guard_json.hpp"
+#include "lost_motion_json.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
@@ -162,6 +163,9 @@ nlohmann::json register_json(const RegisterResult& result) {
   if (model.corrector && model.corrector->guard()) {
     j["guard"] = detail::guard_result_json(*model.corrector->guard());
   }
+  // Only when the term entered: other cells print what they printed.
+  if (model.corrector && model.corrector->lost_motion() && model.corrector->lost_motion()->applied)
+    j["lost_motion"] = lost_motion_result_json(*model.corrector->lost_motion());
   if (model.orientation_corrector) j["orientation"] = orientation_field_json(*model.orientation_corrector);
   add_strategy_json(model, result.relabelled, j);
   return j;
@@ -355,6 +359,10 @@ std::string brief_report(const CorrectResult& r) {
   return std::to_string(r.correction.corrected_robot_m.cols()) + " points, " +
          to_string(r.correction.method_used) + ", n_flagged " +
          std::to_string(r.correction.n_flagged);
+}
+
+nlohmann::json lost_motion_result_json(const LostMotionTerm& term) {
+  return detail::lost_motion_result_json(term);
 }
 
 }  // namespace vrreg::io

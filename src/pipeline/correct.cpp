@@ -88,8 +88,11 @@ CorrectResult correct_points(const Corrector& corrector, const OrientationCorrec
       needs.nominal_robot ? static_cast<std::size_t>(points.size()) : 0, 0);
   const Points3 no_points(3, 0);
   const Eigen::MatrixXd no_joints(0, 0);
+  const bool lost_motion = corrector.lost_motion() && corrector.lost_motion()->applied &&
+                           points.approach_sign.cols() == points.size();
   CorrectionQuery query(points.sensor_m, needs.nominal_robot ? points.robot_m : no_points,
-                        needs.joints ? points.joints_rad : no_joints, sequence);
+                        needs.joints ? points.joints_rad : no_joints, sequence,
+                        lost_motion ? points.approach_sign : no_joints);
   query.extrapolate = extrapolate;
   out.correction = corrector.correct(query);
   if (!points.q_sensor_marker.empty()) {

@@ -48,6 +48,17 @@ CorrectorData corrector_data(const RegistrationModel& model,
       data.joints_rad.col(j) = Eigen::Map<const Eigen::VectorXd>(q.data(), q.size());
     }
   }
+  // The approach directions, when every fiducial has them (the lost-motion term's input).
+  bool approach = joints;
+  for (const Location& f : model.fiducials)
+    approach = approach && f.approach_sign.size() == n_joints;
+  if (approach) {
+    data.approach_sign.resize(static_cast<Eigen::Index>(n_joints), n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const std::vector<double>& s = model.fiducials[static_cast<std::size_t>(j)].approach_sign;
+      data.approach_sign.col(j) = Eigen::Map<const Eigen::VectorXd>(s.data(), s.size());
+    }
+  }
   for (const Location& f : model.fiducials) data.configs.push_back(f.config);
   data.robot = robot;
   // The measured part of one fiducial's noise per axis: its averaged sensor reading, sigma_opt

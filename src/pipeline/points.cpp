@@ -76,6 +76,11 @@ MeasurementSet MeasuredPoints::to_measurement_set(Role role, bool require_robot)
     if (joints_rad.cols() > 0) {
       loc.q_rad.assign(joints_rad.col(i).data(), joints_rad.col(i).data() + joints_rad.rows());
     }
+    if (approach_sign.cols() == sensor_m.cols() && approach_sign.rows() == joints_rad.rows() &&
+        joints_rad.cols() > 0) {
+      loc.approach_sign.assign(approach_sign.col(i).data(),
+                               approach_sign.col(i).data() + approach_sign.rows());
+    }
     if (weights.size() > 0) loc.weight = weights(i);
     const auto k = static_cast<std::size_t>(i);
     if (!q_sensor_marker.empty()) {

@@ -162,7 +162,10 @@ TargetCorrection correct_rows(const RegistrationModel& model, const MeasurementS
         corrector.needs().joints ? joints_of(set, rows) : Eigen::MatrixXd(0, 0);
     const std::vector<std::size_t> lines = source_lines(set, rows);
     const Points3 sensor_m = set.sensor_points(rows);  // the query is a view: kept alive here
-    CorrectionQuery query(sensor_m, nominal_robot_m, joints, lines);
+    // A lost-motion term reads each target's approach directions (none known: both covered).
+    const bool lost_motion = corrector.lost_motion() && corrector.lost_motion()->applied;
+    const Eigen::MatrixXd approach = lost_motion ? approach_of(set, rows) : Eigen::MatrixXd(0, 0);
+    CorrectionQuery query(sensor_m, nominal_robot_m, joints, lines, approach);
     query.extrapolate = request.extrapolate;
     TargetCorrection positions = corrector.correct(query);
     if (orientation != nullptr) {

@@ -107,10 +107,11 @@ RegisterResult register_unchecked(const MeasurementSet& input, const RegisterOpt
   // fiducials should not wait for a mesh nobody asked for.
   if (options.interpolation.method != InterpolationMethod::kLinear) {
     try {
+      CorrectorOptions corrector_options = pipeline_detail::corrector_options(
+          options.interpolation, strategy, options.procedure2.joint_norm);
+      corrector_options.lost_motion = options.lost_motion;
       out.model.corrector = Corrector::fit(
-          pipeline_detail::corrector_data(out.model, out.model.robot),
-          pipeline_detail::corrector_options(options.interpolation, strategy,
-                                             options.procedure2.joint_norm));
+          pipeline_detail::corrector_data(out.model, out.model.robot), corrector_options);
       if (out.model.has_fiducial_orientations()) {  // rigid-body markers
         out.model.orientation_corrector =
             pipeline_detail::fit_orientation(out.model, *out.model.corrector, out.model.robot);
@@ -136,6 +137,10 @@ void RegisterOptions::validate() const {
   interpolation.validate();
   if (robust) robust->validate();
   sigma_l.validate();
+  VRREG_THROW_UNLESS(lost_motion != LostMotionMode::kOn ||
+                         interpolation.method != InterpolationMethod::kLinear,
+                     "lost motion is fitted with the corrector: choose `interpolation` auto or a "
+                     "field model, not linear");
   VRREG_THROW_UNLESS(
       !sigma_rep_m || (std::isfinite(*sigma_rep_m) && *sigma_rep_m >= 0.0),
       "the robot repeatability must be finite and >= 0, got " << *sigma_rep_m << " m");

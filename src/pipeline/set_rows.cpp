@@ -61,4 +61,16 @@ Eigen::MatrixXd joints_of(const MeasurementSet& set, const std::vector<std::size
   return out;
 }
 
+Eigen::MatrixXd approach_of(const MeasurementSet& set, const std::vector<std::size_t>& rows) {
+  const auto n_joints = static_cast<Eigen::Index>(set.n_joints);
+  if (n_joints == 0) return {};
+  Eigen::MatrixXd out(n_joints, static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::vector<double>& s = set.locations[rows[i]].approach_sign;
+    if (static_cast<Eigen::Index>(s.size()) != n_joints) return {};
+    out.col(static_cast<Eigen::Index>(i)) = Eigen::Map<const Eigen::VectorXd>(s.data(), n_joints);
+  }
+  return out;
+}
+
 }  // namespace vrreg::pipeline_detail

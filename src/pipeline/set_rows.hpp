@@ -29,6 +29,10 @@ void labels_of(const MeasurementSet& set, const std::vector<std::size_t>& rows,
 /// The joint angles of the selected rows, one column per row, or 0 x 0 when a row has none.
 Eigen::MatrixXd joints_of(const MeasurementSet& set, const std::vector<std::size_t>& rows);
 
+/// The selected locations' approach directions (Location::approach_sign), one column each, or
+/// 0 x 0 when some location has none.
+Eigen::MatrixXd approach_of(const MeasurementSet& set, const std::vector<std::size_t>& rows);
+
 /// The selected locations, copied.
 std::vector<Location> locations_of(const MeasurementSet& set, const std::vector<std::size_t>& rows);
 

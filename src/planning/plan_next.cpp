@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -199,25 +200,36 @@ double rms(const Eigen::VectorXd& sd_m) {
 
 // Greedy: each pick maximises sum_a scale_a^2 sum_p cov_a(p, c)^2 / (var_a(c) + nugget_a^2),
 // the drop of the summed posterior variance at the parts when c is measured (rank-one update).
-// All positions are the model's inputs (KrigingCorrectorDesign::inputs).
+// All positions are the model's inputs (KrigingCorrectorDesign::inputs). The posterior given the
+// measured fiducials is computed once; each pick b then conditions it on one more noisy
+// observation, Sigma <- Sigma - Sigma(., b) Sigma(b, .) / (Sigma(b, b) + nugget^2), which is the
+// universal-kriging posterior of the enlarged design (the trend's flat prior conditions the same
+// way), without refactoring the design per pick.
 std::vector<std::size_t> greedy_variance(const PlanNextResult& r, const Points3& candidates_m,
                                          const Points3& measured_m, const Points3& parts_m,
                                          int count) {
   const auto n_candidates = static_cast<std::size_t>(candidates_m.cols());
+  const Eigen::Index nc = candidates_m.cols();
+  std::array<Eigen::MatrixXd, 3> cov_pc;  // parts x candidates, given everything so far
+  std::array<Eigen::VectorXd, 3> var_c;   // candidates
+  // Per axis, the updates so far: column j is Sigma_j(., b_j) / sqrt(Sigma_j(b_j, b_j) + nugget^2)
+  // over the candidates, so that Sigma_k(c, b) = Sigma_0(c, b) - sum_j u_j(c) u_j(b).
+  std::array<Eigen::MatrixXd, 3> updates;
+  for (std::size_t a = 0; a < 3; ++a) {
+    cov_pc[a] = kriging_posterior_covariance(measured_m, parts_m, candidates_m, r.model[a]);
+    var_c[a] = kriging_posterior_variance(measured_m, candidates_m, r.model[a]);
+    updates[a].resize(nc, 0);
+  }
   std::vector<std::size_t> picked;
   std::vector<bool> used(n_candidates, false);
-  Points3 design_m = measured_m;
   while (static_cast<int>(picked.size()) < count) {
-    Eigen::VectorXd gain = Eigen::VectorXd::Zero(candidates_m.cols());
+    Eigen::VectorXd gain = Eigen::VectorXd::Zero(nc);
     for (std::size_t a = 0; a < 3; ++a) {
-      const Eigen::MatrixXd cov =
-          kriging_posterior_covariance(design_m, parts_m, candidates_m, r.model[a]);
-      const Eigen::VectorXd var = kriging_posterior_variance(design_m, candidates_m, r.model[a]);
       const double nugget2 =
           r.model[a].hyperparameters.nugget_sd_m * r.model[a].hyperparameters.nugget_sd_m;
       const double scale2 = r.latent_sd_scale[a] * r.latent_sd_scale[a];
-      gain += scale2 * (cov.colwise().squaredNorm().transpose().array() /
-                        (var.array() + nugget2).max(std::numeric_limits<double>::min()))
+      gain += scale2 * (cov_pc[a].colwise().squaredNorm().transpose().array() /
+                        (var_c[a].array() + nugget2).max(std::numeric_limits<double>::min()))
                            .matrix();
     }
     std::size_t best = n_candidates;
@@ -231,7 +243,24 @@ std::vector<std::size_t> greedy_variance(const PlanNextResult& r, const Points3&
     if (best == n_candidates) break;
     used[best] = true;
     picked.push_back(best);
-    design_m = with_columns(design_m, candidates_m.col(static_cast<Eigen::Index>(best)));
+    if (static_cast<int>(picked.size()) == count) break;
+    const auto b = static_cast<Eigen::Index>(best);
+    for (std::size_t a = 0; a < 3; ++a) {
+      const double nugget2 =
+          r.model[a].hyperparameters.nugget_sd_m * r.model[a].hyperparameters.nugget_sd_m;
+      const double denom = std::sqrt(std::max(var_c[a](b) + nugget2, 0.0));
+      if (!(denom > 0.0)) continue;  // a noiseless, known point: nothing left to learn there
+      Eigen::VectorXd cov_cb =
+          kriging_posterior_covariance(measured_m, candidates_m, candidates_m.col(b), r.model[a])
+              .col(0);
+      if (updates[a].cols() > 0) cov_cb -= updates[a] * updates[a].row(b).transpose();
+      const Eigen::VectorXd u = cov_cb / denom;
+      const Eigen::VectorXd w = cov_pc[a].col(b) / denom;
+      cov_pc[a].noalias() -= w * u.transpose();
+      var_c[a] -= u.cwiseAbs2();
+      updates[a].conservativeResize(Eigen::NoChange, updates[a].cols() + 1);
+      updates[a].col(updates[a].cols() - 1) = u;
+    }
   }
   return picked;
 }
@@ -471,6 +500,49 @@ void PlanNextOptions::validate(const kinematics::SerialChain& chain) const {
 PlanNextResult plan_next(const kinematics::SerialChain& chain, const std::vector<PartPoint>& parts,
                          const MeasuredFiducials& measured, const PlanNextOptions& options) {
   return next_batch::run(chain, parts, measured, options);
+}
+
+}  // namespace vrreg::planning
+
+namespace vrreg::planning {
+
+std::vector<PartPoint> volume_part_points(const Eigen::Vector3d& min_m, const Eigen::Vector3d& max_m,
+                                          double spacing_m, long long max_points) {
+  VRREG_THROW_UNLESS(min_m.allFinite() && max_m.allFinite(),
+                     "plan next: the work volume's corners must be finite");
+  VRREG_THROW_UNLESS(std::isfinite(spacing_m) && spacing_m > 0.0,
+                     "plan next: the volume spacing must be finite and positive, got "
+                         << units::m_to_mm(spacing_m) << " mm");
+  Eigen::Vector3i n;
+  Eigen::Vector3d first_m;
+  for (int a = 0; a < 3; ++a) {
+    const double extent_m = max_m(a) - min_m(a);
+    VRREG_THROW_UNLESS(extent_m >= 0.0, "plan next: the work volume's "
+                                            << "xyz"[a] << " range is empty ("
+                                            << units::m_to_mm(min_m(a)) << " > "
+                                            << units::m_to_mm(max_m(a)) << " mm)");
+    // A whisker of tolerance: a 200 mm box at 50 mm holds 5 nodes despite rounding.
+    const double cells = std::floor(extent_m / spacing_m + 1e-9);
+    VRREG_THROW_UNLESS(cells < 1e6, "plan next: the work volume holds too many part points");
+    n(a) = static_cast<int>(cells) + 1;
+    first_m(a) = min_m(a) + 0.5 * (extent_m - cells * spacing_m);
+  }
+  const long long total = static_cast<long long>(n(0)) * n(1) * n(2);
+  VRREG_THROW_UNLESS(total <= max_points, "plan next: the work volume at "
+                                              << units::m_to_mm(spacing_m) << " mm holds " << total
+                                              << " part points, more than " << max_points
+                                              << " (use a larger spacing)");
+  std::vector<PartPoint> parts;
+  parts.reserve(static_cast<std::size_t>(total));
+  for (int iz = 0; iz < n(2); ++iz) {
+    for (int iy = 0; iy < n(1); ++iy) {
+      for (int ix = 0; ix < n(0); ++ix) {
+        const Eigen::Vector3d p_m = first_m + spacing_m * Eigen::Vector3d(ix, iy, iz);
+        parts.push_back({"v" + std::to_string(parts.size() + 1), next_batch::snapped_m(p_m)});
+      }
+    }
+  }
+  return parts;
 }
 
 }  // namespace vrreg::planning

@@ -76,6 +76,11 @@ void AuditLog::record(const std::string& client, const char* protocol,
   line += R"(,"sha256":")" + model_sha256 + R"(","sensor_mm":)" + mm3_text(request.sensor_mm);
   if (request.config) line += fmt::format(R"(,"config":{})", *request.config);
   if (!request.joints_rad.empty()) line += ",\"joints_rad\":" + nlohmann::json(request.joints_rad).dump();
+  if (!request.from_rad.empty()) line += ",\"from_rad\":" + nlohmann::json(request.from_rad).dump();
+  if (!request.approach_sign.empty()) {
+    std::vector<int> signs(request.approach_sign.begin(), request.approach_sign.end());
+    line += ",\"approach\":" + nlohmann::json(signs).dump();
+  }
   if (request.extrapolate) line += R"(,"extrapolate":true)";
   if (request.q_sensor_marker)
     line += R"(,"sensor_q":)" + quaternion_text(*request.q_sensor_marker);

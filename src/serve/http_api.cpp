@@ -29,11 +29,27 @@ double number_at(const json& v, const std::string& where) {
   return x;
 }
 
+// The angles [rad] under `key`, when the item has it.
+void read_angles(const json& item, const char* key, const std::string& where,
+                 std::vector<double>& out) {
+  const auto q = item.find(key);
+  if (q == item.end()) return;
+  if (!q->is_array() || q->empty() || q->size() > 16) {
+    throw Refused{where + "." + key + ": expected 1 to 16 angles in rad"};
+  }
+  for (const json& v : *q) {
+    const double angle = number_at(v, where + "." + key);
+    if (std::abs(angle) > 100.0) throw Refused{where + "." + key + ": not an angle in rad"};
+    out.push_back(angle);
+  }
+}
+
 void read_point(const json& item, const std::string& where, PointRequest& out) {
   if (!item.is_object()) throw Refused{where + ": expected an object"};
   for (const auto& [key, value] : item.items()) {
     if (key != "model" && key != "sensor_mm" && key != "joints_rad" && key != "config" &&
-        key != "extrapolate" && key != "points" && key != "sensor_q") {
+        key != "extrapolate" && key != "points" && key != "sensor_q" && key != "from_rad" &&
+        key != "approach") {
       throw Refused{where + ": unknown key '" + key + "'"};
     }
   }
@@ -44,14 +60,33 @@ void read_point(const json& item, const std::string& where, PointRequest& out) {
   for (int a = 0; a < 3; ++a) {
     out.sensor_mm(a) = number_at((*s)[static_cast<std::size_t>(a)], where + ".sensor_mm");
   }
-  if (const auto q = item.find("joints_rad"); q != item.end()) {
-    if (!q->is_array() || q->empty() || q->size() > 16) {
-      throw Refused{where + ".joints_rad: expected 1 to 16 angles in rad"};
+  read_angles(item, "joints_rad", where, out.joints_rad);
+  read_angles(item, "from_rad", where, out.from_rad);
+  if (!out.from_rad.empty()) {
+    if (item.contains("approach")) throw Refused{where + ": give from_rad or approach, not both"};
+    if (out.joints_rad.empty()) {
+      throw Refused{where + ".from_rad: needs joints_rad (the approach is joints - from)"};
     }
-    for (const json& v : *q) {
-      const double angle = number_at(v, where + ".joints_rad");
-      if (std::abs(angle) > 100.0) throw Refused{where + ".joints_rad: not an angle in rad"};
-      out.joints_rad.push_back(angle);
+    if (out.from_rad.size() != out.joints_rad.size()) {
+      throw Refused{where + ".from_rad: " + std::to_string(out.from_rad.size()) +
+                    " angles, joints_rad " + std::to_string(out.joints_rad.size())};
+    }
+    out.approach_sign = approach_sign_of_move(out.from_rad, out.joints_rad);
+  }
+  if (const auto a = item.find("approach"); a != item.end()) {
+    if (!a->is_array() || a->empty() || a->size() > 16) {
+      throw Refused{where + ".approach: expected 1 to 16 signs (-1, 0 or 1)"};
+    }
+    for (const json& v : *a) {
+      const double sign = number_at(v, where + ".approach");
+      if (sign != -1.0 && sign != 0.0 && sign != 1.0) {
+        throw Refused{where + ".approach: a sign is -1, 0 or 1"};
+      }
+      out.approach_sign.push_back(sign == 0.0 ? 0.0 : sign);
+    }
+    if (!out.joints_rad.empty() && out.approach_sign.size() != out.joints_rad.size()) {
+      throw Refused{where + ".approach: " + std::to_string(out.approach_sign.size()) +
+                    " signs, joints_rad " + std::to_string(out.joints_rad.size())};
     }
   }
   if (const auto c = item.find("config"); c != item.end()) {

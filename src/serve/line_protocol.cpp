@@ -63,6 +63,7 @@ const OrientationKeyword* orientation_keyword(std::string_view field) {
 
 bool is_keyword(std::string_view field) {
   return equals_ignoring_case(field, "config") || equals_ignoring_case(field, "joints") ||
+         equals_ignoring_case(field, "from") || equals_ignoring_case(field, "approach") ||
          equals_ignoring_case(field, "extrapolate") || orientation_keyword(field) != nullptr;
 }
 
@@ -103,6 +104,39 @@ std::string shown(std::string_view field) {
   std::string out;
   for (const char c : field.substr(0, 32)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
   return field.size() > 32 ? out + "..." : out;
+}
+
+// The angles [rad] after `joints` or `from` (`keyword`), up to the next keyword; `value` names one.
+std::optional<std::string> read_angles(std::string_view keyword, std::string_view value,
+                                       const std::vector<std::string_view>& fields, std::size_t& i,
+                                       std::vector<double>& out) {
+  while (i < fields.size() && !is_keyword(fields[i])) {
+    const std::optional<double> q = number_of(fields[i]);
+    if (!q || std::abs(*q) > 100.0) {
+      return fmt::format("{} '{}' is not a finite angle in rad", value, shown(fields[i]));
+    }
+    if (out.size() == kMaxJoints) return std::string("more than 16 joints");
+    out.push_back(*q);
+    ++i;
+  }
+  if (out.empty()) return fmt::format("{} without values", keyword);
+  return std::nullopt;
+}
+
+// The signs -1, 0, +1 after `approach`, up to the next keyword.
+std::optional<std::string> read_signs(const std::vector<std::string_view>& fields, std::size_t& i,
+                                      std::vector<double>& out) {
+  while (i < fields.size() && !is_keyword(fields[i])) {
+    const std::optional<double> s = number_of(fields[i]);
+    if (!s || (*s != -1.0 && *s != 0.0 && *s != 1.0)) {
+      return "approach sign '" + shown(fields[i]) + "' is not -1, 0 or 1";
+    }
+    if (out.size() == kMaxJoints) return std::string("approach: more than 16 joints");
+    out.push_back(*s == 0.0 ? 0.0 : *s);  // no "-0"
+    ++i;
+  }
+  if (out.empty()) return std::string("approach without values");
+  return std::nullopt;
 }
 
 BadRequest malformed(std::string reason) { return {ReplyCode::kMalformed, std::move(reason)}; }
@@ -184,6 +218,8 @@ LineRequest parse_fields(const std::vector<std::string_view>& fields) {
   }
   bool seen_config = false;
   bool seen_joints = false;
+  bool seen_from = false;
+  bool seen_approach = false;
   for (std::size_t i = 4; i < fields.size();) {
     const std::string_view key = fields[i++];
     if (equals_ignoring_case(key, "extrapolate") && !request.extrapolate) {
@@ -199,16 +235,17 @@ LineRequest parse_fields(const std::vector<std::string_view>& fields) {
       request.config = label;
     } else if (equals_ignoring_case(key, "joints") && !seen_joints) {
       seen_joints = true;
-      while (i < fields.size() && !is_keyword(fields[i])) {
-        const std::optional<double> q = number_of(fields[i]);
-        if (!q || std::abs(*q) > 100.0) {
-          return malformed("joint '" + shown(fields[i]) + "' is not a finite angle in rad");
-        }
-        if (request.joints_rad.size() == kMaxJoints) return malformed("more than 16 joints");
-        request.joints_rad.push_back(*q);
-        ++i;
+      if (auto why = read_angles("joints", "joint", fields, i, request.joints_rad)) {
+        return malformed(*why);
       }
-      if (request.joints_rad.empty()) return malformed("joints without values");
+    } else if (equals_ignoring_case(key, "from") && !seen_from && !seen_approach) {
+      seen_from = true;
+      if (auto why = read_angles("from", "from joint", fields, i, request.from_rad)) {
+        return malformed(*why);
+      }
+    } else if (equals_ignoring_case(key, "approach") && !seen_approach && !seen_from) {
+      seen_approach = true;
+      if (auto why = read_signs(fields, i, request.approach_sign)) return malformed(*why);
     } else if (const OrientationKeyword* k = orientation_keyword(key);
                k != nullptr && request.orientation_form == OrientationForm::kNone) {
       std::string why;
@@ -217,9 +254,21 @@ LineRequest parse_fields(const std::vector<std::string_view>& fields) {
       request.orientation_form = k->form;
     } else {
       return malformed("unexpected '" + shown(key) +
-                       "' (after x y z: config <label>, joints <q_rad...>, extrapolate, and one "
-                       "of rotvec/quat/abc, once each)");
+                       "' (after x y z: config <label>, joints <q_rad...>, from <q_rad...> or "
+                       "approach <signs...>, extrapolate, and one of rotvec/quat/abc, once each)");
     }
+  }
+  if (seen_from) {
+    if (!seen_joints) return malformed("from without joints (the approach is joints - from)");
+    if (request.from_rad.size() != request.joints_rad.size()) {
+      return malformed(fmt::format("from has {} joints, joints {}", request.from_rad.size(),
+                                   request.joints_rad.size()));
+    }
+    request.approach_sign = approach_sign_of_move(request.from_rad, request.joints_rad);
+  }
+  if (seen_approach && seen_joints && request.approach_sign.size() != request.joints_rad.size()) {
+    return malformed(fmt::format("approach has {} signs, joints {}", request.approach_sign.size(),
+                                 request.joints_rad.size()));
   }
   return request;
 }

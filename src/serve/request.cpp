@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "request.hpp"
 
+#include <Eigen/Core>
 #include <utility>
+
+#include "vrreg/core/measurement.hpp"
 
 namespace vrreg::serve {
 
@@ -31,6 +34,16 @@ int orientation_numbers(OrientationForm form) {
       return 3;
   }
   return 0;
+}
+
+std::vector<double> approach_sign_of_move(const std::vector<double>& from_rad,
+                                          const std::vector<double>& joints_rad) {
+  const auto n = static_cast<Eigen::Index>(joints_rad.size());
+  Eigen::VectorXd sign = Eigen::VectorXd::Zero(n);
+  update_approach_sign(Eigen::Map<const Eigen::VectorXd>(
+                           from_rad.data(), static_cast<Eigen::Index>(from_rad.size())),
+                       Eigen::Map<const Eigen::VectorXd>(joints_rad.data(), n), sign);
+  return {sign.data(), sign.data() + n};
 }
 
 PointAnswer PointAnswer::refusal(ReplyCode code, std::string reason) {

@@ -27,12 +27,22 @@ struct PointRequest {
   Eigen::Vector3d sensor_mm = Eigen::Vector3d::Zero();  ///< measured point, sensor frame [mm]
   std::optional<int> config;         ///< arm configuration label (Procedure 2 models)
   std::vector<double> joints_rad;    ///< commanded joints (the joint-space model) [rad]
+  /// The joints the robot comes from [rad] (`from`), one per commanded joint, or empty.
+  std::vector<double> from_rad;
+  /// Per commanded joint, the sign (-1, 0, +1) of its last move before the point (`approach`,
+  /// or sign(joints - from) when `from` is given); empty when the request gives no direction.
+  std::vector<double> approach_sign;
   bool extrapolate = false;          ///< correct outside the support too (status "extrapolated")
   /// The marker's measured orientation, sensor frame (a rigid-body marker; docs/orientation.md),
   /// and the form it was given in, which the reply takes.
   std::optional<Eigen::Quaterniond> q_sensor_marker;
   OrientationForm orientation_form = OrientationForm::kNone;
 };
+
+/// Per joint, the sign of the move from `from_rad` to `joints_rad` (update_approach_sign from
+/// unknown: 0 where the joint does not move). Both of the same size.
+std::vector<double> approach_sign_of_move(const std::vector<double>& from_rad,
+                                          const std::vector<double>& joints_rad);
 
 /// Reply codes: 0 is an answer; every other code is a refusal the client must handle. On the line
 /// protocol the code is sent as a negative sd, so a robot program tests `sd < 0`.

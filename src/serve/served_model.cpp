@@ -85,6 +85,10 @@ PointAnswer ServedModel::answer(const PointRequest& request, double max_extrapol
       points.joints_rad = Eigen::Map<const Eigen::VectorXd>(
           request.joints_rad.data(), static_cast<Eigen::Index>(request.joints_rad.size()));
     }
+    if (!request.approach_sign.empty()) {
+      points.approach_sign = Eigen::Map<const Eigen::VectorXd>(
+          request.approach_sign.data(), static_cast<Eigen::Index>(request.approach_sign.size()));
+    }
     if (request.q_sensor_marker) {
       if (!corrector_.corrects_orientation()) {
         return PointAnswer::refusal(

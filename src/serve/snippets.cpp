@@ -23,6 +23,7 @@ void SnippetOptions::validate() const {
     VRREG_THROW_UNLESS(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == ':',
                        "--connect '" << host << "': an IP address or host name");
   }
+  VRREG_THROW_UNLESS(n_joints >= 0 && n_joints <= 16, "the model's robot: 0 to 16 joints");
   VRREG_THROW_UNLESS(!host.empty(), "--connect: no host");
   VRREG_THROW_UNLESS(port > 0, "--connect: the service's port (1 to 65535)");
   VRREG_THROW_UNLESS(std::isfinite(timeout_s) && timeout_s > 0 && timeout_s <= 60,
@@ -42,6 +43,17 @@ std::string urscript_pose_request_line(const SnippetOptions& options,
                                        const std::array<std::string, 6>& pose) {
   return options.model + " " + pose[0] + " " + pose[1] + " " + pose[2] + " rotvec " + pose[3] +
          " " + pose[4] + " " + pose[5] + "\n";
+}
+
+std::string urscript_joints_request_line(const SnippetOptions& options,
+                                         const std::array<std::string, 3>& xyz,
+                                         const std::vector<std::string>& q,
+                                         const std::vector<std::string>& q_from) {
+  std::string line = options.model + " " + xyz[0] + " " + xyz[1] + " " + xyz[2] + " joints";
+  for (const std::string& v : q) line += " " + v;
+  line += " from";
+  for (const std::string& v : q_from) line += " " + v;
+  return line + "\n";
 }
 
 namespace {
@@ -79,6 +91,46 @@ std::string urscript_request_expression(const std::string& model, bool pose) {
     }
   }
   return str_cat_all(parts);
+}
+
+// The URScript expression of the request line with the commanded joints `q` and those the robot
+// comes from, `q_from` (lists of n_joints angles, rad).
+std::string urscript_joints_request_expression(const std::string& model, int n_joints) {
+  std::vector<std::string> parts = {
+      "\"" + model + " \"", urscript_number(0), "\" \"", urscript_number(1), "\" \"",
+      urscript_number(2)};
+  int scale = 1;
+  for (int k = 0; k < kUrscriptRadDecimals; ++k) scale *= 10;
+  for (const char* list : {"q", "q_from"}) {
+    parts.push_back(std::string(list) == "q" ? "\" joints\"" : "\" from\"");
+    for (int j = 0; j < n_joints; ++j) {
+      parts.push_back("\" \"");
+      parts.push_back(fmt::format("vrreg_text({}[{}], {})", list, j, scale));
+    }
+  }
+  return str_cat_all(parts);
+}
+
+// vrreg_correct_joints, when the model's answers need the joints.
+std::string urscript_joints_function(const SnippetOptions& o) {
+  if (o.n_joints == 0) return "";
+  return fmt::format(
+      "# vrreg_correct_joints(p_sensor_mm, q, q_from): as vrreg_correct, for this model, whose\n"
+      "# answers need the joints: q = the {n} joints commanded at the point, q_from = those the\n"
+      "# robot comes from (the previous commanded point; get_target_joint_positions() just before\n"
+      "# the move), rad. The service takes each joint's approach direction from q - q_from (lost\n"
+      "# motion leaves a joint short of its command against the direction it arrived from).\n"
+      "def vrreg_correct_joints(p_sensor_mm, q, q_from):\n"
+      "  reply = vrreg_ask({request}, 4)\n"
+      "  if reply[4] < 0:\n"
+      "    popup(str_cat(\"vrreg: point refused, code \", -reply[4]), \"vrreg\", error=True, "
+      "blocking=True)\n"
+      "    halt\n"
+      "  end\n"
+      "  return [reply[1], reply[2], reply[3], reply[4]]\n"
+      "end\n",
+      fmt::arg("n", o.n_joints),
+      fmt::arg("request", urscript_joints_request_expression(o.model, o.n_joints)));
 }
 
 }  // namespace
@@ -189,7 +241,8 @@ std::string urscript_client(const SnippetOptions& o) {
       fmt::arg("auth", auth), fmt::arg("mm_places", kUrscriptMmDecimals),
       fmt::arg("rad_places", kUrscriptRadDecimals),
       fmt::arg("point_request", urscript_request_expression(o.model, false)),
-      fmt::arg("pose_request", urscript_request_expression(o.model, true)));
+      fmt::arg("pose_request", urscript_request_expression(o.model, true))) +
+         urscript_joints_function(o);
 }
 
 std::string krl_eki_config(const SnippetOptions& o) {

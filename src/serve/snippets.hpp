@@ -4,6 +4,7 @@
 // corrected by `vrreg serve` (URScript for Universal Robots, KRL with EthernetKRL for KUKA).
 #include <array>
 #include <string>
+#include <vector>
 
 namespace vrreg::serve {
 
@@ -13,6 +14,10 @@ struct SnippetOptions {
   unsigned short port = 0;
   double timeout_s = 2.0;      ///< no reply within this: the program stops, never moves
   std::string token;           ///< sent first ("auth <token>") when the service needs one
+  /// Joints of the served model's robot when its answers need them (a joint-space model, or one
+  /// with a lost-motion term): the program then also has the functions that send the commanded
+  /// joints and those the robot comes from; 0: it has not.
+  int n_joints = 0;
 
   /// Throws InputError naming the option.
   void validate() const;
@@ -35,6 +40,12 @@ inline constexpr int kUrscriptRadDecimals = 7;
 /// them (what the tests send to the service to check the snippet's bytes).
 std::string urscript_request_line(const SnippetOptions& options, const std::string& x,
                                   const std::string& y, const std::string& z);
+/// The line `vrreg_correct_joints(p, q, q_from)` sends: the point, `joints` and `from` (rad, as
+/// vrreg_text writes them to kUrscriptRadDecimals).
+std::string urscript_joints_request_line(const SnippetOptions& options,
+                                         const std::array<std::string, 3>& xyz,
+                                         const std::vector<std::string>& q,
+                                         const std::vector<std::string>& q_from);
 std::string urscript_pose_request_line(const SnippetOptions& options,
                                        const std::array<std::string, 6>& pose);
 

@@ -118,6 +118,7 @@ TEST(FileOptionRoles, InputsAndOutputsOfTheCommands) {
       {"serve", {{"--model", kInput}, {"--token-file", kInput}, {"--audit-log", kOutput}}},
       {"snippet",
        {{"--model", kNotAFile},
+        {"--model-file", kInput},
         {"--token-file", kInput},
         {"--output", kOutput},
         {"--eki-config", kOutput}}},

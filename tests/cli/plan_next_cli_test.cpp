@@ -306,5 +306,52 @@ TEST_F(PlanNextCli, GoalAsAFloorMultipleAndLatticeRows) {
   EXPECT_EQ(json::parse(tighter.out)["decision"], "continue") << tighter.out;
 }
 
+// --volume: the part points are the box's lattice, the same batch as --parts with those points
+// (named v1.. in the same order); a box inside out, or both inputs, are refused.
+TEST_F(PlanNextCli, VolumeIsTheLatticeOfParts) {
+  std::string lattice = "point,robot_x_mm,robot_y_mm,robot_z_mm\n";
+  int k = 0;
+  for (const int z : {230, 280}) {
+    for (const int y : {-150, -100, -50}) {
+      for (const int x : {400, 450, 500}) {
+        lattice += "v" + std::to_string(++k) + "," + std::to_string(x) + "," + std::to_string(y) +
+                   "," + std::to_string(z) + "\n";
+      }
+    }
+  }
+  write_text(dir_ / "lattice.csv", lattice);
+  const std::string rest = " --robot ur5 --goal-sd-mm 0.05 --batch 6 --json -o ";
+  const CliResult volume = run_vrreg("plan-next --volume 400,500,-150,-50,220,290" + rest +
+                                     p("volume.csv"));
+  ASSERT_EQ(volume.status, 0) << volume.err;
+  const CliResult parts = run_vrreg("plan-next --parts " + p("lattice.csv") + rest + p("parts.csv"));
+  ASSERT_EQ(parts.status, 0) << parts.err;
+  EXPECT_EQ(json::parse(volume.out)["parts"].size(), 18u);
+  EXPECT_EQ(read_text(dir_ / "volume.csv"), read_text(dir_ / "parts.csv"));
+  EXPECT_EQ(volume.out, parts.out);
+  const CliResult inside_out =
+      run_vrreg("plan-next --volume 500,400,-150,-50,220,290 --robot ur5 --goal-sd-mm 0.05");
+  EXPECT_NE(inside_out.status, 0);
+  EXPECT_NE(inside_out.err.find("x range is empty"), std::string::npos) << inside_out.err;
+  EXPECT_NE(run_vrreg("plan-next --volume 400,500,-150,-50,220,290 --parts " + p("lattice.csv") +
+                      " --robot ur5 --goal-sd-mm 0.05")
+                .status,
+            0);
+  const CliResult neither = run_vrreg("plan-next --robot ur5 --goal-sd-mm 0.05");
+  EXPECT_NE(neither.status, 0);
+  EXPECT_NE(neither.err.find("--volume"), std::string::npos) << neither.err;
+}
+
+// vrreg adaptive-study refuses what it cannot run before running anything (the study itself is
+// AdaptiveStudy.QuickOnBothTestBeds in tests/experiments).
+TEST(AdaptiveStudyCli, BadInputIsRefused) {
+  const CliResult robot = run_vrreg("adaptive-study --robots ur10");
+  EXPECT_NE(robot.status, 0);
+  EXPECT_NE(robot.err.find("--robots"), std::string::npos) << robot.err;
+  EXPECT_NE(run_vrreg("adaptive-study --quick --batch 8").status, 0);
+  EXPECT_NE(run_vrreg("adaptive-study --seconds-per-move -1").status, 0);
+  EXPECT_NE(run_vrreg("adaptive-study --goal-sd-mm 0").status, 0);
+}
+
 }  // namespace
 }  // namespace vrreg::testing

@@ -21,6 +21,15 @@ int serve_line(const std::uint8_t* data, std::size_t size) {
     require(!p->model.empty() && p->model.size() <= 64, "line protocol: accepted a bad model name");
     require(p->joints_rad.size() <= 16, "line protocol: accepted more than 16 joints");
     for (const double q : p->joints_rad) require(std::isfinite(q), "line protocol: joint not finite");
+    require(p->from_rad.empty() || p->from_rad.size() == p->joints_rad.size(),
+            "line protocol: accepted from without as many joints");
+    require(p->approach_sign.size() <= 16 &&
+                (p->joints_rad.empty() || p->approach_sign.empty() ||
+                 p->approach_sign.size() == p->joints_rad.size()),
+            "line protocol: accepted approach signs that do not match the joints");
+    for (const double s : p->approach_sign) {
+      require(s == -1.0 || s == 0.0 || s == 1.0, "line protocol: an approach sign not -1, 0, 1");
+    }
     serve::PointAnswer a;
     a.robot_mm = p->sensor_mm;
     const std::string reply = serve::format_line_reply(a);

@@ -392,5 +392,26 @@ TEST(PlanNext, CandidatePositionsAreExactLatticeMillimetres) {
   }
 }
 
+// A work volume as part points: the lattice is centred in the box (equal margins), x fastest,
+// named v1..; a degenerate axis gives one node; bad boxes and spacings are refused.
+TEST(VolumePartPoints, LatticeCentredInTheBox) {
+  const std::vector<PartPoint> parts =
+      volume_part_points({0.40, -0.15, 0.25}, {0.52, -0.05, 0.25}, 0.05);
+  // x: 120 mm -> 3 nodes, 10 mm margins; y: 100 mm -> 3 nodes; z: 0 mm -> 1 node.
+  ASSERT_EQ(parts.size(), 9u);
+  EXPECT_EQ(parts.front().name, "v1");
+  EXPECT_EQ(parts.back().name, "v9");
+  EXPECT_EIGEN_NEAR(parts[0].robot_m, Eigen::Vector3d(0.41, -0.15, 0.25), 1e-12);
+  EXPECT_EIGEN_NEAR(parts[1].robot_m, Eigen::Vector3d(0.46, -0.15, 0.25), 1e-12);
+  EXPECT_EIGEN_NEAR(parts[3].robot_m, Eigen::Vector3d(0.41, -0.10, 0.25), 1e-12);
+  EXPECT_EIGEN_NEAR(parts[8].robot_m, Eigen::Vector3d(0.51, -0.05, 0.25), 1e-12);
+  // A 200 mm extent at 50 mm keeps both ends despite rounding (5 nodes).
+  EXPECT_EQ(volume_part_points({0.4, 0.0, 0.2}, {0.6, 0.0, 0.2}, 0.05).size(), 5u);
+  EXPECT_THROW((void)volume_part_points({0.5, 0, 0}, {0.4, 0, 0}, 0.05), InputError);
+  EXPECT_THROW((void)volume_part_points({0, 0, 0}, {0.1, 0.1, 0.1}, 0.0), InputError);
+  EXPECT_THROW((void)volume_part_points({0, 0, 0}, {0.1, 0.1, 0.1}, std::nan("")), InputError);
+  EXPECT_THROW((void)volume_part_points({0, 0, 0}, {1.0, 1.0, 1.0}, 0.001), InputError);
+}
+
 }  // namespace
 }  // namespace vrreg::planning

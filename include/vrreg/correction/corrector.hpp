@@ -20,6 +20,7 @@
 #include "vrreg/correction/corrector_data.hpp"
 #include "vrreg/correction/cross_validation.hpp"
 #include "vrreg/correction/interpolation.hpp"
+#include "vrreg/correction/lost_motion_term.hpp"
 
 namespace vrreg {
 
@@ -42,6 +43,11 @@ struct CorrectorOptions {
   /// when it is not better, answer every target uncorrected (correction_guard.hpp). Off: for a
   /// field fitted inside another corrector that judges itself (the orientations').
   bool guard = true;
+  /// The lost-motion term (lost_motion_term.hpp, docs/joint-space-model.md "Lost motion"): a
+  /// first stage fitted on the fiducials' corrections when they carry joints, the robot and
+  /// approach directions with some joint approached from both sides; the method then fits what
+  /// it leaves. auto: it enters when cross-validation finds it clearly better.
+  LostMotionMode lost_motion = LostMotionMode::kAuto;
   /// Throws InputError on settings that cannot work (octuplet without a cube edge, folds < 2).
   void validate() const;
 };
@@ -61,10 +67,21 @@ struct CorrectionQuery {
   CorrectionQuery(const ConstPoints3Ref& sensor_m, const ConstPoints3Ref& robot_nominal_m,
                   const Eigen::Ref<const Eigen::MatrixXd>& joints_rad,
                   std::span<const std::size_t> sequence = {});
+  /// With the points' approach directions (`approach_sign`, n_joints x N, or 0 x 0).
+  CorrectionQuery(const ConstPoints3Ref& sensor_m, const ConstPoints3Ref& robot_nominal_m,
+                  const Eigen::Ref<const Eigen::MatrixXd>& joints_rad,
+                  std::span<const std::size_t> sequence,
+                  const Eigen::Ref<const Eigen::MatrixXd>& approach_sign);
   ConstPoints3Ref sensor_m;            ///< measured positions, sensor frame [m]
   ConstPoints3Ref robot_nominal_m;     ///< nominal robot positions [m] (octuplet, Strategy 3)
   Eigen::Ref<const Eigen::MatrixXd> joints_rad;  ///< commanded joints [rad] (joint, Strategy 3)
   std::span<const std::size_t> sequence{};  ///< where each point was read (file line), or empty
+  /// Per point and commanded joint, the sign (-1, 0, +1) of the joint's last move before the
+  /// robot reached the point (its approach direction, update_approach_sign), n_joints x N; 0 x 0
+  /// when unknown, 0 entries where one joint's direction is unknown. A corrector with a
+  /// lost-motion term (Corrector::lost_motion) uses it; without it, never silently one
+  /// direction: the term's mean over both (none) with an sd that covers either.
+  Eigen::Ref<const Eigen::MatrixXd> approach_sign;
   /// Correct points outside the method's support (grid, hull, box, joint ranges) too, status
   /// kExtrapolated, instead of leaving them uncorrected: every method alike, with the correction
   /// at the support's nearest point plus half the field's affine trend from there, and an sd
@@ -89,6 +106,8 @@ struct SavedCorrector {
   /// Whether the correction is applied, and the figures that decided it; none: not guarded
   /// (a model saved without the guard is applied).
   std::optional<CorrectionGuard> guard{};
+  /// The lost-motion term, when it was fitted (applied or not); none for older models.
+  std::optional<LostMotionTerm> lost_motion{};
 };
 
 /// A correction method fitted on one registration's fiducials (see the file comment).
@@ -129,6 +148,9 @@ class Corrector {
   [[nodiscard]] const std::optional<CrossValidation>& cross_validation() const;
   /// The guard's figures (CorrectorOptions::guard), none when the corrector was not guarded.
   [[nodiscard]] const std::optional<CorrectionGuard>& guard() const;
+  /// The lost-motion term fitted beside the method (lost_motion_term.hpp), applied or not;
+  /// none when it could not be fitted (no joints, robot or approach directions) or was not asked.
+  [[nodiscard]] const std::optional<LostMotionTerm>& lost_motion() const;
   /// False when the guard found the correction not better than none: every target is then
   /// answered uncorrected with StencilStatus::kNotBetterThanNone.
   [[nodiscard]] bool applied() const;

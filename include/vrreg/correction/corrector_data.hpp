@@ -21,6 +21,9 @@ struct CorrectorData {
   /// Where each fiducial was read (its file line: the visiting order), or empty when unknown.
   std::vector<std::size_t> sequence{};
   Eigen::MatrixXd joints_rad{};  ///< joint angles, one column per fiducial, or 0 x 0 without
+  /// Per fiducial and joint, the sign (-1, 0, +1) of the joint's last move before it was read
+  /// (Location::approach_sign), same shape as joints_rad, or 0 x 0 when unknown.
+  Eigen::MatrixXd approach_sign{};
   /// Arm configuration labels (Strategy 3 keeps every configuration), or empty.
   std::vector<std::optional<int>> configs{};
   std::optional<kinematics::SerialChain> robot{};  ///< the arm the joints belong to (to the marker)
@@ -36,6 +39,7 @@ struct CorrectorData {
 
   [[nodiscard]] Eigen::Index size() const { return fiducials_robot_m.cols(); }
   [[nodiscard]] bool has_joints() const { return joints_rad.size() > 0; }
+  [[nodiscard]] bool has_approach() const { return approach_sign.size() > 0; }
   /// The fiducials whose columns are `keep`, in that order (a cross-validation fold).
   [[nodiscard]] CorrectorData subset(const std::vector<Eigen::Index>& keep) const;
   /// Throws InputError when the members disagree in size or hold non-finite values.

@@ -64,7 +64,16 @@ struct BeyondOptions {
   /// spheres, positions only); given error models are kept as they are. A2 and B stay spheres:
   /// their orientation fields on 8 000-9 000 fiducials add a minute to the 8 of the run.
   double rigid_body_radius_m = 0.05;
+  /// With ur5: A1_backlash and A1_mixed, half of A1 with lost motion (lost_motion_errors).
+  bool lost_motion = true;
 };
+
+/// The UR5 lost-motion cells' robot errors (A1_backlash, A1_mixed): per-joint lost motion of
+/// 0.8, 0.2, 0.15, 0.7, 0.6, 0.4 arc-min (the wrist and base joints' gears larger, the
+/// gravity-preloaded shoulder and elbow smaller) on `base` without its transmission error
+/// (backlash), or on `base` with gravity sag (the UR5's link masses on joints of 1e5 / 3e4
+/// N m / rad, about 0.2 mm at the tool) and 3 K of aluminium's thermal growth (mixed).
+simulation::TestbedErrorModel lost_motion_errors(simulation::TestbedErrorModel base, bool mixed);
 
 /// The field methods of the table, in printed order.
 const std::vector<InterpolationMethod>& beyond_field_methods();

@@ -21,6 +21,11 @@ nlohmann::json register_json(const RegisterResult& result);
 /// An orientation field: its method, whether it is applied (its cross-validated RMS angle below
 /// the uncorrected one), both RMS angles and the methods compared (mrad).
 nlohmann::json orientation_field_json(const OrientationCorrector& field);
+
+/// The corrector's lost-motion term for a command's --json: `applied`, `joints` (`joint`,
+/// `play_arcmin`, `sd_arcmin`), `cv_rms_with_mm`, `cv_rms_without_mm`, `judged_by`,
+/// `n_compared`, `reason`. register_json holds it when the term entered the correction.
+nlohmann::json lost_motion_result_json(const LostMotionTerm& term);
 /// evaluate: RMS_T (Eq. 4) both ways over the corrected targets, gamma, N_bad, the flagged ones
 /// apart, the predicted sd and its calibration, the strategy used.
 nlohmann::json evaluate_json(const EvaluateResult& result);

@@ -22,6 +22,10 @@ struct MeasuredPoints {
   std::vector<std::string> names{};  ///< labels for messages and outputs; empty: "1", "2", ...
   std::vector<int> configs{};        ///< arm configuration labels (Procedure 2); empty: none
   Eigen::MatrixXd joints_rad{};      ///< joint angles, one column per location [rad]; empty: none
+  /// Per location and joint, the sign (-1, 0, +1) of the joint's last move before the location
+  /// was reached (its approach direction, update_approach_sign), one column per location as
+  /// joints_rad; 0 x 0 when unknown. Passed to CorrectionQuery::approach_sign.
+  Eigen::MatrixXd approach_sign{};
   /// Repeat readings averaged into each sensor position, and their per-axis sums of squared
   /// deviations [m^2] (for sigma_opt, Eq. 9); both empty when unknown.
   Eigen::VectorXi n_readings{};

@@ -10,6 +10,7 @@
 
 #include "vrreg/core/measurement.hpp"
 #include "vrreg/correction/interpolation.hpp"
+#include "vrreg/correction/lost_motion_term.hpp"
 #include "vrreg/correction/outliers.hpp"
 #include "vrreg/metrics/noise.hpp"
 #include "vrreg/metrics/rigid_body.hpp"
@@ -43,6 +44,9 @@ struct RegisterOptions {
   /// The arm the fiducials' joints belong to, up to the marker: stored in the model for the
   /// joint-space field model (interpolation joint or auto).
   std::optional<kinematics::SerialChain> robot{};
+  /// The lost-motion term of the fitted corrector (CorrectorOptions::lost_motion): needs joints,
+  /// `robot` and the fiducials' approach directions; on needs a fitted corrector (not linear).
+  LostMotionMode lost_motion = LostMotionMode::kAuto;
   /// Throws InputError on combinations that cannot work (see the members).
   void validate() const;
 };

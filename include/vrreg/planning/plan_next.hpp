@@ -111,6 +111,14 @@ struct PlanNextResult {
   [[nodiscard]] bool ok() const { return status == PlanStatus::kOk; }
 };
 
+/// Part points for a work volume instead of points: a lattice of spacing `spacing_m` [m] over the
+/// box [min_m, max_m] (robot base frame), centred in it (on an axis of extent L, floor(L / spacing)
+/// + 1 nodes, the same margin at both ends), named "v<k>" (k from 1, x fastest, then y, z).
+/// Throws InputError on a non-finite corner, min above max on an axis, a spacing that is not
+/// finite and positive, or more than max_points nodes.
+std::vector<PartPoint> volume_part_points(const Eigen::Vector3d& min_m, const Eigen::Vector3d& max_m,
+                                          double spacing_m, long long max_points = 10'000);
+
 /// Plans the next batch of fiducial locations for `parts` (robot base frame) on `chain` (UR or
 /// LWR 4+ structure) given the fiducials measured so far. Later batches pick greedily, each the
 /// reachable candidate that most reduces the summed predicted variance at the parts given all
