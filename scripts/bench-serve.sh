@@ -6,8 +6,9 @@
 # model (tabulated every 5 mm) and its RRBC grid model, beside a minimal Python service
 # wrapping scipy's RBFInterpolator (python/benchmarks/serve_peer.py). Every line-protocol reply of
 # vrreg is checked against `vrreg correct`'s CSV (wrong = 0), but for the poses (checked against
-# vrreg::correct in tests/serve/serve_orientation_test.cpp). Last, one robot client's latency while
-# two clients send 10 000-point HTTP batches. The service writes its audit log (one line per
+# vrreg::correct in tests/serve/serve_orientation_test.cpp) and the lost-motion model's answers
+# with an approach direction (against vrreg::correct in tests/serve/serve_approach_test.cpp).
+# Last, one robot client's latency while two clients send 10 000-point HTTP batches. The service writes its audit log (one line per
 # correction) throughout, as a plant runs it.
 #   scripts/bench-serve.sh [SECONDS_PER_RUN]        (default 5; needs the release build)
 set -euo pipefail
@@ -39,6 +40,25 @@ awk -F, '/^point,/ { for (i = 1; i <= NF; ++i) col[$i] = i }
     print $6, $7, $8, "quat", $col["sensor_qx"], $col["sensor_qy"], $col["sensor_qz"], $col["sensor_qw"] }' \
   "$work/a1.csv" > "$work/a1-pose.txt"
 
+# With lost motion (0.6 arc-min on joints 1, 4, 5, 6, 0.15 on 2 and 3; docs/joint-space-model.md):
+# the kriging model with its lost-motion term, asked with the joints and where they came from
+# (`joints ... from ...`, the previous target's joints), as a robot program asks it.
+"$vrreg" simulate ur5 A1 --write-errors "$work/ur5-errors.json" >/dev/null
+/usr/bin/python3 - "$work/ur5-errors.json" <<'PY'
+import json, sys
+errors = json.load(open(sys.argv[1]))
+errors["robot"]["lost_motion_arcmin"] = [0.6, 0.15, 0.15, 0.6, 0.6, 0.6]
+json.dump(errors, open(sys.argv[1], "w"))
+PY
+"$vrreg" simulate ur5 A1 --seed 1 --errors "$work/ur5-errors.json" -o "$work/a1-lm.csv" >/dev/null
+"$vrreg" register --fiducials "$work/a1-lm.csv" --robot ur5 --interpolation kriging \
+  --lost-motion on -o "$work/a1-lm.json" >/dev/null
+awk -F, '/^point,/ { for (i = 1; i <= NF; ++i) col[$i] = i }
+  !/^#/ && !/^point,/ && $2 == "target" && !seen[$1]++ {
+    q = ""; for (j = 1; j <= 6; ++j) q = q " " $col["q" j "_rad"]
+    if (prev != "") print $6, $7, $8, "joints" q, "from" prev
+    prev = q }' "$work/a1-lm.csv" > "$work/a1-lm.txt"
+
 # What `vrreg correct` writes, as the line protocol would reply it.
 expect() {  # MODEL_JSON POINTS_TXT OUT
   awk 'BEGIN { print "point,role,sensor_x_mm,sensor_y_mm,sensor_z_mm" } { print "p" NR ",target," $1 "," $2 "," $3 }' "$2" > "$work/points.csv"
@@ -58,7 +78,7 @@ port_of() {  # LOG PATTERN
   echo "bench-serve: no $2 port in $1" >&2; exit 1
 }
 "$vrreg" serve --model "lattice=$work/lattice.json" --model "a1k=$work/a1-kriging.json" \
-  --model "a1g=$work/a1-grid.json" --listen 127.0.0.1:0 --http 127.0.0.1:0 \
+  --model "a1g=$work/a1-grid.json" --model "a1lm=$work/a1-lm.json" --listen 127.0.0.1:0 --http 127.0.0.1:0 \
   --audit-log "$work/audit.jsonl" 2> "$work/serve.log" &
 pids+=($!)
 line=$(port_of "$work/serve.log" "line protocol")
@@ -84,6 +104,7 @@ for c in 1 16 64; do run vrreg lattice http 127.0.0.1:$http $c "$work/lattice.tx
 for c in 1 16 64; do run vrreg a1g line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-grid.expect"; done
 for c in 1 16 64; do run vrreg a1k line 127.0.0.1:$line $c "$work/a1.txt" "$work/a1-kriging.expect"; done
 for c in 1 16 64; do run vrreg "a1k pose" line 127.0.0.1:$line $c "$work/a1-pose.txt"; done
+for c in 1 16 64; do run vrreg "a1lm from" line 127.0.0.1:$line $c "$work/a1-lm.txt"; done
 for c in 1 16 64; do run "scipy peer" lattice line 127.0.0.1:$peer $c "$work/lattice.txt"; done
 
 # A robot's request while cell software sends batches: one line-protocol client (checked) beside

@@ -31,6 +31,7 @@ struct AdaptiveStudyArgs {
   std::optional<double> goal_sd_mm;
   double candidate_spacing_mm = 20.0;
   std::vector<double> cube_edges_mm;
+  std::string interpolation = "joint";
   bool quick = false;
   bool json = false;
   std::string report;
@@ -64,13 +65,16 @@ std::string study_text(const ex::AdaptiveStudyResult& r) {
          ++fixed) {
       const ex::FixedPlanRun& f = r.fixed[fixed];
       const std::string plan =
-          f.plan == "grid" ? fmt::format("grid {:g} mm (kriging)", units::m_to_mm(f.cube_edge_m))
+          f.plan == "grid" ? fmt::format("grid {:g} mm ({})", units::m_to_mm(f.cube_edge_m),
+                                         f.interpolation)
                            : fmt::format("Procedure 1 d={:.2f} mm", units::m_to_mm(f.d_m));
       out += fmt::format("{:<6} {:>5}  {:<22} {:>9} {:>9} {:>9} {:>10} {:>10}\n", f.robot, f.seed,
                          plan, f.n_fiducials, f.n_readings, minutes(f.robot_time_s),
                          mm(f.rms_t_m), "");
     }
-    out += fmt::format("{:<6} {:>5}  stopped: {}\n\n", a.robot, a.seed, a.stop_reason);
+    out += fmt::format("{:<6} {:>5}  stopped: {} (corrected with {}, predicted by {})\n\n",
+                       a.robot, a.seed, a.stop_reason, a.interpolation,
+                       a.batches.empty() ? std::string("-") : a.batches.back().predicted_by);
   }
   out += "Done when (adaptive at STOP against Procedure 1 at d_min):\n";
   out += fmt::format("{:<6} {:>5} {:>10} {:>9} {:>10} {:>9} {:>9}  {}\n", "robot", "seed",
@@ -100,12 +104,15 @@ nlohmann::json study_json(const ex::AdaptiveStudyResult& r) {
                          {"n_readings", b.n_readings},
                          {"robot_time_s", b.robot_time_s},
                          {"predicted_rms_t_mm", number_mm(b.predicted_rms_t_m)},
+                         {"predicted_by", b.predicted_by},
+                         {"prediction_note", b.prediction_note},
                          {"measured_rms_t_mm", number_mm(b.measured_rms_t_m)}});
     }
     const double ratio = a.measured_over_predicted();
     adaptive.push_back({{"robot", a.robot},
                         {"seed", a.seed},
                         {"stop_reason", a.stop_reason},
+                        {"interpolation", a.interpolation},
                         {"measured_over_predicted",
                          std::isfinite(ratio) ? nlohmann::json(ratio) : nlohmann::json()},
                         {"batches", batches}});
@@ -155,6 +162,7 @@ void run_adaptive_study(const AdaptiveStudyArgs& args) {
   if (args.goal_sd_mm) o.goal_sd_m = units::mm_to_m(*args.goal_sd_mm);
   o.candidate_spacing_m = units::mm_to_m(args.candidate_spacing_mm);
   for (const double a : args.cube_edges_mm) o.cube_edges_m.push_back(units::mm_to_m(a));
+  o.interpolation = parse_interpolation_method(args.interpolation);
   if (args.quick) o = ex::quick_study_options(o);
   const ex::AdaptiveStudyResult result = ex::run_adaptive_study(o);
   if (!args.report.empty()) {
@@ -172,7 +180,7 @@ void add_adaptive_study_command(CLI::App& app) {
   ex::AdaptiveStudyOptions& o = args->options;
   CLI::App* cmd = app.add_subcommand(
       "adaptive-study",
-      "close the adaptive loop (plan-next -> simulate -> register kriging -> plan-next) on the "
+      "close the adaptive loop (plan-next -> simulate -> register -> plan-next) on the "
       "simulated UR5 and LWR 4+ over seeds, against Procedure 1's octuplets at each cube edge and "
       "the full grid: fiducials, readings, robot time, RMS_T (docs/adaptive.md)");
   cmd->add_option("--seeds", args->seeds, "seeds, e.g. --seeds 3 4 5")
@@ -205,6 +213,12 @@ void add_adaptive_study_command(CLI::App& app) {
                   "this fraction (plan-next's rule is 0.01; 0: goal and budget only)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.99));
+  not_a_file(*cmd, cmd->add_option("--interpolation", args->interpolation,
+                                   "what the loop and the grid correct with (the loop's measured "
+                                   "and predicted RMS_T, its goal and stop): joint, kriging, rbf, "
+                                   "trilinear, auto")
+                       ->capture_default_str()
+                       ->check(CLI::IsMember({"joint", "kriging", "rbf", "trilinear", "auto"})));
   cmd->add_option("--candidate-spacing-mm", args->candidate_spacing_mm,
                   "adaptive candidate lattice spacing, mm")
       ->capture_default_str()

@@ -34,49 +34,6 @@ struct EvaluateArgs {
   bool json = false;
 };
 
-// ISO 9283's multi-directional accuracy over the evaluated targets: their approach directions
-// come from the file's locations, matched in order by name and nominal position (evaluate keeps
-// the file's order); none when a target cannot be matched or no point has two directions.
-MultidirectionalAccuracy multidirectional_of(const EvaluateResult& r, const MeasurementSet& set) {
-  const auto n = static_cast<std::size_t>(r.n_targets());
-  if (r.names.size() != n || r.correction.stencils.size() != n) return {};
-  std::vector<std::vector<double>> signs(n);
-  std::vector<bool> corrected(n);
-  std::size_t at = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto col = static_cast<Eigen::Index>(i);
-    while (at < set.locations.size() &&
-           !(set.locations[at].role == Role::kTarget && set.locations[at].point == r.names[i] &&
-             set.locations[at].robot_m == r.targets_robot_m.col(col))) {
-      ++at;
-    }
-    if (at == set.locations.size()) return {};
-    signs[i] = set.locations[at++].approach_sign;
-    corrected[i] = is_corrected(r.correction.stencils[i].status);
-  }
-  return multidirectional_accuracy(r.targets_robot_m, r.correction.uncorrected_robot_m,
-                                   r.correction.corrected_robot_m, signs, r.names,
-                                   r.configs.size() == n ? r.configs
-                                                         : std::vector<std::optional<int>>{},
-                                   corrected);
-}
-
-nlohmann::json multidirectional_json(const MultidirectionalAccuracy& m) {
-  nlohmann::json directions = nlohmann::json::array();
-  for (const DirectionAccuracy& d : m.directions) {
-    directions.push_back({{"approach", approach_text(d.approach_sign)},
-                          {"n_targets", d.n_targets},
-                          {"unc_rms_t_mm", units::m_to_mm(d.unc_rms_t_m)},
-                          {"cor_rms_t_mm", units::m_to_mm(d.cor_rms_t_m)}});
-  }
-  return {{"n_points", m.n_points},
-          {"directions", directions},
-          {"unc_spread_max_mm", units::m_to_mm(m.unc_max_spread_m)},
-          {"unc_spread_mean_mm", units::m_to_mm(m.unc_mean_spread_m)},
-          {"cor_spread_max_mm", units::m_to_mm(m.cor_max_spread_m)},
-          {"cor_spread_mean_mm", units::m_to_mm(m.cor_mean_spread_m)}};
-}
-
 void print_multidirectional(const MultidirectionalAccuracy& m) {
   std::printf("  multi-directional (ISO 9283)  %d target point%s visited from %zu directions\n",
               m.n_points, m.n_points == 1 ? "" : "s", m.directions.size());
@@ -105,7 +62,6 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
   }
   const MeasurementSet targets = read_measurements(args.targets);
   const EvaluateResult r = evaluate(model, targets, options);
-  const MultidirectionalAccuracy multidirectional = multidirectional_of(r, targets);
   const ImprovementSummary& s = r.summary;
   const TargetCorrection& c = r.correction;
   const std::optional<int>& config = r.config;
@@ -118,9 +74,6 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
     nlohmann::json j = io::evaluate_json(r, model);
     j["model"] = args.model;
     j["targets"] = args.targets;
-    if (multidirectional.n_points > 0) {
-      j["multidirectional"] = multidirectional_json(multidirectional);
-    }
     print_json(j);
     return;
   }
@@ -168,7 +121,7 @@ void run_evaluate_unchecked(const EvaluateArgs& args, const RegistrationModel& m
                   o.calibration.rms_ratio, 100.0 * o.calibration.within_2sigma);
     }
   }
-  if (multidirectional.n_points > 0) print_multidirectional(multidirectional);
+  if (r.multidirectional) print_multidirectional(*r.multidirectional);
   std::printf("  gamma = (unc - cor) / unc     %.1f %%\n", 100.0 * s.gamma);
   std::printf("  N_bad (TRE got worse)         %d of %d", s.n_bad, s.n_targets);
   if (!bad.empty()) {

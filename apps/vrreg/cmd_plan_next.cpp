@@ -23,6 +23,7 @@
 #include "vrreg/io/file_error.hpp"
 #include "vrreg/io/parts_csv.hpp"
 #include "vrreg/io/plan_csv.hpp"
+#include "vrreg/pipeline/plan_next_correction.hpp"
 #include "vrreg/planning/plan_next.hpp"
 
 namespace vrreg::cli {
@@ -38,14 +39,14 @@ struct PlanNextArgs {
   int budget = 64;
   double candidate_spacing_mm = 20.0;
   double margin_mm = 20.0;
+  std::string interpolation = "kriging";  ///< what the measured fiducials will be corrected with
   std::vector<double> volume_mm;  ///< x0 x1 y0 y1 z0 z1: a work volume instead of part points
   double volume_spacing_mm = 50.0;
 };
 
 // The measured fiducials and the noise of one averaged reading (the nugget's floor).
-planning::MeasuredFiducials read_measured(const std::string& path,
+planning::MeasuredFiducials read_measured(const std::string& path, const MeasurementSet& set,
                                           std::optional<double>& noise_sd_m) {
-  const MeasurementSet set = read_measurements(path);
   try {
     planning::FiducialsWithNoise m = planning::measured_fiducials(set);
     noise_sd_m = m.noise_sd_m;
@@ -80,7 +81,9 @@ std::vector<std::string> next_comments(const PlanNextArgs& args, const PlanSetup
                           args.candidate_spacing_mm, args.margin_mm));
   c.push_back(std::string("design: ") + (r.space_filling ? "space-filling (greedy maximin)"
                                                          : "greedy kriging variance reduction"));
-  c.push_back("predicted sd at the parts now: " + next_sd_text(r.rms_sd_now_m));
+  c.push_back("predicted sd at the parts now: " + next_sd_text(r.rms_sd_now_m) + " (" +
+              r.sd_method + ")");
+  if (!r.sd_note.empty()) c.push_back("kriging's prediction used: " + r.sd_note);
   c.push_back("predicted sd at the parts after the batch: " + next_sd_text(r.rms_sd_after_m));
   for (const std::string& note : setup.notes) c.push_back("note: " + note);
   return c;
@@ -108,6 +111,8 @@ nlohmann::json next_json(const planning::PlanNextResult& r) {
           {"noise_floor_mm", number(r.noise_floor_m)},
           {"predicted_sd_now_mm", number(r.rms_sd_now_m)},
           {"predicted_sd_after_mm", number(r.rms_sd_after_m)},
+          {"predicted_by", r.has_model ? nlohmann::json(r.sd_method) : nlohmann::json()},
+          {"prediction_note", r.sd_note.empty() ? nlohmann::json() : nlohmann::json(r.sd_note)},
           {"path_mm", units::m_to_mm(r.path_m)},
           {"parts", parts}};
 }
@@ -144,7 +149,17 @@ void run_plan_next_unchecked(const PlanNextArgs& args) {
   options.margin_m = units::mm_to_m(args.margin_mm);
   options.arm = setup.options.arm;
   planning::MeasuredFiducials measured;
-  if (!args.measured.empty()) measured = read_measured(args.measured, options.noise_sd_m);
+  if (!args.measured.empty()) {
+    MeasurementSet set = read_measurements(args.measured);
+    measured = read_measured(args.measured, set, options.noise_sd_m);
+    const InterpolationMethod method = parse_interpolation_method(args.interpolation);
+    if (method != InterpolationMethod::kKriging) {
+      RegisterOptions register_options;
+      register_options.interpolation.method = method;
+      register_options.robot = setup.chain;  // the joints in the file are on the plan's chain
+      options.correction_sd = correction_sd_at_parts(std::move(set), register_options);
+    }
+  }
 
   options.validate(setup.chain);
   planning::PlanNextResult r;
@@ -188,9 +203,15 @@ void run_plan_next_unchecked(const PlanNextArgs& args) {
   }
   std::printf("measured fiducials: %lld; reachable candidates: %lld\n",
               static_cast<long long>(r.n_measured), static_cast<long long>(r.n_candidates));
-  std::printf("predicted sd at the parts now: %s; after the batch: %s (goal %s)\n",
+  std::printf("predicted sd at the parts now: %s; after the batch: %s (goal %s)%s\n",
               next_sd_text(r.rms_sd_now_m).c_str(), next_sd_text(r.rms_sd_after_m).c_str(),
-              goal_text(args, r).c_str());
+              goal_text(args, r).c_str(),
+              r.has_model && r.sd_method != "kriging" ? (", predicted by " + r.sd_method).c_str()
+                                                      : "");
+  if (!r.sd_note.empty()) {
+    std::printf("predicted by kriging: the %s correction gives none yet (%s)\n",
+                args.interpolation.c_str(), r.sd_note.c_str());
+  }
   if (!r.locations.empty()) {
     std::printf("next batch: %zu locations (%s), path %.1f mm%s\n", r.locations.size(),
                 r.space_filling ? "space-filling" : "greedy variance reduction",
@@ -258,6 +279,13 @@ void add_plan_next_command(CLI::App& app) {
   cmd->add_option("--budget", args->budget, "most fiducials in all, measured and planned")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
+  not_a_file(*cmd,
+             cmd->add_option("--interpolation", args->interpolation,
+                             "what the measured fiducials will be corrected with: its predicted "
+                             "sd at the parts is judged against the goal (joint needs the "
+                             "joints in --measured; the batch is still kriging's best)")
+                 ->capture_default_str()
+                 ->check(CLI::IsMember({"kriging", "joint", "rbf", "trilinear", "auto"})));
   cmd->add_option("--candidate-spacing-mm", args->candidate_spacing_mm,
                   "spacing of the candidate lattice over the parts' bounding box, mm")
       ->capture_default_str()

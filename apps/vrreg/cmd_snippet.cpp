@@ -60,10 +60,10 @@ void run_snippet(const SnippetArgs& args) {
     }
     outputs.push_back({args.output, serve::urscript_client(o)});
   } else {
-    if (o.n_joints > 0) {
-      throw InputError("--model-file: the model's answers need the robot's joints and where it "
-                       "comes from, which the KRL function does not send (the URScript's "
-                       "vrreg_correct_joints and the line protocol's joints/from do)");
+    if (o.n_joints > 0 && args.pose) {
+      throw InputError("--pose: the model's answers need the robot's joints, which "
+                       "VRREG_CORRECT_POSE does not send (without --pose the file's function is "
+                       "VRREG_CORRECT_JOINTS)");
     }
     if (args.eki_config.empty()) {
       throw InputError("--eki-config: krl needs the EthernetKRL configuration file (vrreg.xml)");

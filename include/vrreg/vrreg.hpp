@@ -16,6 +16,7 @@
 #include "vrreg/pipeline/interpolation_choice.hpp"
 #include "vrreg/pipeline/marker_offset.hpp"
 #include "vrreg/pipeline/model.hpp"
+#include "vrreg/pipeline/plan_next_correction.hpp"
 #include "vrreg/pipeline/points.hpp"
 #include "vrreg/pipeline/prepared_corrector.hpp"
 #include "vrreg/pipeline/register_fiducials.hpp"

@@ -13,6 +13,7 @@
 #include "vrreg/kinematics/configuration_order.hpp"
 #include "vrreg/kinematics/robots.hpp"
 #include "vrreg/planning/plan.hpp"
+#include "vrreg/pipeline/plan_next_correction.hpp"
 #include "vrreg/planning/plan_next.hpp"
 #include "vrreg/simulation/testbed.hpp"
 
@@ -227,6 +228,12 @@ void bind_planning(py::module_& m) {
           "noise_floor",
           [](const planning::PlanNextResult& p) { return metres_or_none(p.noise_floor_m); },
           "sqrt(3 (sigma_rep^2 + sigma_opt^2 / K)) [m], or None without repeat readings")
+      .def_property_readonly(
+          "predicted_by", [](const planning::PlanNextResult& p) { return p.sd_method; },
+          "the method whose predicted sd part_sd_now is ('kriging' or plan_next's interpolation)")
+      .def_property_readonly(
+          "prediction_note", [](const planning::PlanNextResult& p) { return p.sd_note; },
+          "why the interpolation asked gave no sd (kriging's was used), or ''")
       .def_property_readonly("n_measured",
                              [](const planning::PlanNextResult& p) { return p.n_measured; })
       .def_property_readonly("n_candidates",
@@ -247,7 +254,7 @@ void bind_planning(py::module_& m) {
          const py::object& measured_robot, std::optional<double> noise_sd, const std::string& robot,
          std::optional<double> goal_sd, std::optional<double> goal_floor_multiple, double sigma_rep,
          int batch, int budget, double candidate_spacing, double margin,
-         const std::string& joint_norm) {
+         const std::string& joint_norm, const std::string& interpolation) {
         const std::vector<planning::PartPoint> points = part_points(parts, names, "plan_next");
         const PlanSetup s = testbed_setup(robot);
         planning::PlanNextOptions o;
@@ -269,7 +276,17 @@ void bind_planning(py::module_& m) {
           planning::FiducialsWithNoise f = planning::measured_fiducials(*set);
           fiducials = std::move(f.fiducials);
           o.noise_sd_m = f.noise_sd_m;
+          const InterpolationMethod method = parse_interpolation_method(interpolation);
+          if (method != InterpolationMethod::kKriging) {
+            RegisterOptions r;
+            r.interpolation.method = method;
+            r.robot = s.chain;
+            o.correction_sd = correction_sd_at_parts(*set, r);
+          }
         } else if (!measured.is_none()) {
+          VRREG_THROW_UNLESS(interpolation == "kriging",
+                             "plan_next: interpolation other than kriging needs the measured "
+                             "fiducials as a vrreg.Measurements (with their joints)");
           VRREG_THROW_UNLESS(!measured_robot.is_none(),
                              "plan_next: measured (sensor positions) needs measured_robot");
           fiducials = {points_from(measured_robot, "measured_robot"),
@@ -287,14 +304,17 @@ void bind_planning(py::module_& m) {
       py::arg("robot") = "ur5", py::arg("goal_sd") = py::none(),
       py::arg("goal_floor_multiple") = py::none(), py::arg("sigma_rep") = 0.0, py::arg("batch") = 8,
       py::arg("budget") = 64, py::arg("candidate_spacing") = 0.02, py::arg("margin") = 0.02,
-      py::arg("joint_norm") = "l2",
+      py::arg("joint_norm") = "l2", py::arg("interpolation") = "kriging",
       "Adaptive planning (docs/adaptive.md), as `vrreg plan-next`: the next batch of fiducial "
       "locations where the kriging correction's predicted sd at the part points ((M, 3) in "
       "METRES, robot base frame, with M names) falls fastest, and whether to stop. measured: the "
       "fiducials so far, a vrreg.Measurements (its fiducial rows; noise_sd from their repeats) or "
       "(N, 3) sensor positions with measured_robot (N, 3) [m]; None: the first batch. The goal is "
       "goal_sd [m] or goal_floor_multiple times the noise floor sqrt(3 (sigma_rep^2 + "
-      "noise_sd^2)); noise_sd [m] is one averaged fiducial reading's sd, sigma_opt / sqrt(K).");
+      "noise_sd^2)); noise_sd [m] is one averaged fiducial reading's sd, sigma_opt / sqrt(K). "
+      "interpolation: what the fiducials will be corrected with ('kriging', 'joint', 'rbf', "
+      "'trilinear', 'auto'; not kriging: measured as a vrreg.Measurements): the goal and the "
+      "stop judge its predicted sd at the parts (predicted_by).");
 
   m.def(
       "volume_part_points",

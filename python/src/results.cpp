@@ -319,6 +319,33 @@ void bind_results(py::module_& m) {
           },
           "RMS_T of the n_flagged targets left uncorrected, as registered [m]; None if none")
       .def_property_readonly(
+          "multidirectional",
+          [](const EvaluateResult& r) -> py::object {
+            if (!r.multidirectional) return py::none();
+            const MultidirectionalAccuracy& accuracy = *r.multidirectional;
+            py::list directions;
+            for (const DirectionAccuracy& d : accuracy.directions) {
+              py::dict one;
+              one["approach"] = approach_text(d.approach_sign);
+              one["n_targets"] = d.n_targets;
+              one["unc_rms_t"] = d.unc_rms_t_m;
+              one["cor_rms_t"] = d.cor_rms_t_m;
+              directions.append(one);
+            }
+            py::dict out;
+            out["n_points"] = accuracy.n_points;
+            out["directions"] = directions;
+            out["unc_spread_max"] = accuracy.unc_max_spread_m;
+            out["unc_spread_mean"] = accuracy.unc_mean_spread_m;
+            out["cor_spread_max"] = accuracy.cor_max_spread_m;
+            out["cor_spread_mean"] = accuracy.cor_mean_spread_m;
+            return out;
+          },
+          "ISO 9283's multi-directional accuracy over the corrected targets [m] (n_points, "
+          "directions: approach, n_targets, unc_rms_t, cor_rms_t; unc/cor_spread_max/mean), "
+          "as `vrreg evaluate` prints it; None unless some target point was visited from two "
+          "approach directions")
+      .def_property_readonly(
           "unc_rms_t",
           [](const EvaluateResult& r) { return of_corrected(r, r.summary.unc_rms_t_m); },
           "RMS_T uncorrected (Eq. 4) of the corrected targets [m]; None if none was corrected")

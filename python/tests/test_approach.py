@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """Approach directions in correct() and evaluate(): approach_from_q or approach_sign, checked and
 named as the caller named them; a model without a lost-motion term answers as without them."""
+import json
+
 import numpy as np
 import pytest
 
@@ -64,3 +66,25 @@ def test_measurements_carry_their_own_directions(model_and_points, example_cell)
     targets = vrreg.read_measurements(example_cell)
     with pytest.raises(ValueError, match="approach_sign go with arrays"):
         vrreg.correct(model, targets, approach_sign=np.ones((3, 6)))
+
+
+def test_evaluate_reports_multidirectional_accuracy_as_the_command_does(model_and_points):
+    model, points, robot, joints = model_and_points
+    # Each of the ten targets visited twice, from opposite directions of every joint.
+    twice = np.vstack([points, points + 1e-5])
+    signs = np.vstack([np.ones((10, 6)), -np.ones((10, 6))])
+    names = [f"t{i}" for i in range(10)] * 2
+    ev = vrreg.evaluate(model, twice, np.vstack([robot, robot]), names=names,
+                        joints=np.vstack([joints, joints]), approach_sign=signs)
+    m = ev.multidirectional
+    assert m is not None and m["n_points"] == 10
+    assert [d["approach"] for d in m["directions"]] == ["++++++", "------"]
+    assert [d["n_targets"] for d in m["directions"]] == [10, 10]
+    # The second visit reads 1e-5 m further on every axis: every point's directions are that far
+    # apart uncorrected.
+    assert m["unc_spread_max"] == pytest.approx(np.sqrt(3) * 1e-5, rel=1e-6)
+    assert m["unc_spread_mean"] == pytest.approx(np.sqrt(3) * 1e-5, rel=1e-6)
+    cli = json.loads(ev.to_json())["multidirectional"]
+    assert cli["n_points"] == 10
+    assert cli["unc_spread_max_mm"] == pytest.approx(1e3 * m["unc_spread_max"], rel=1e-12)
+    assert vrreg.evaluate(model, points, robot, joints=joints).multidirectional is None

@@ -90,6 +90,47 @@ def test_plan_next_matches_the_command_line(tmp_path):
     assert arrays.predicted_sd_now == pytest.approx(second.predicted_sd_now, rel=1e-6)
 
 
+@pytest.mark.skipif("VRREG_CLI" not in os.environ, reason="needs the vrreg binary")
+def test_plan_next_judges_the_goal_on_the_joint_model(tmp_path):
+    parts_csv = tmp_path / "parts.csv"
+    parts_csv.write_text("point,robot_x_mm,robot_y_mm,robot_z_mm\n" + "".join(
+        f"{n},{x:g},{y:g},{z:g}\n" for n, (x, y, z) in zip(NAMES, PARTS_MM)))
+    parts = PARTS_MM / 1000.0
+    # 27 fiducials around each part (81): enough for the joint-space model's parameters.
+    plan = tmp_path / "plan.csv"
+    _cli("plan", "--parts", str(parts_csv), "--robot", "ur5", "--halfwidth-mm", "20",
+         "--spacing-mm", "20", "-o", str(plan))
+    m = tmp_path / "m.csv"
+    _cli("simulate", "ur5", "--plan", str(plan), "--only", "fiducial", "--seed", "3", "-o", str(m))
+    measured = vrreg.read_measurements(str(m))
+    joint = vrreg.plan_next(parts, NAMES, measured, goal_sd=1e-5, budget=200,
+                            interpolation="joint")
+    assert joint.decision == "continue" and len(joint) == 8
+    assert joint.predicted_by == "joint" and joint.prediction_note == ""
+    assert joint.predicted_sd_now > 0 and joint.predicted_sd_after is None
+    cli = json.loads(_cli("plan-next", "--parts", str(parts_csv), "--robot", "ur5",
+                          "--goal-sd-mm", "0.01", "--budget", "200", "--interpolation", "joint",
+                          "--measured",
+                          str(m), "--json"))
+    assert cli["predicted_by"] == "joint"
+    assert joint.predicted_sd_now * 1000.0 == pytest.approx(cli["predicted_sd_now_mm"], rel=1e-12)
+    kriging = vrreg.plan_next(parts, NAMES, measured, goal_sd=1e-5, budget=200)
+    assert kriging.predicted_by == "kriging"
+    # The goal between the two predictions: reached for the lower one only (here kriging's:
+    # three local cubes leave the joint-space model's parameters loosely determined).
+    assert joint.predicted_sd_now != pytest.approx(kriging.predicted_sd_now, rel=0.05)
+    goal = 0.5 * (joint.predicted_sd_now + kriging.predicted_sd_now)
+    reasons = {method: vrreg.plan_next(parts, NAMES, measured, goal_sd=goal, budget=200,
+                                       interpolation=method).reason
+               for method in ("joint", "kriging")}
+    lower = "joint" if joint.predicted_sd_now < kriging.predicted_sd_now else "kriging"
+    for method, reason in reasons.items():
+        assert (reason == "the goal is reached") == (method == lower), (method, reason)
+    with pytest.raises(ValueError):
+        vrreg.plan_next(parts, NAMES, measured.sensor, measured_robot=measured.robot,
+                        goal_sd=1e-5, interpolation="joint")  # arrays carry no joints
+
+
 def test_plan_next_refuses_bad_input():
     parts = PARTS_MM / 1000.0
     with pytest.raises(ValueError):

@@ -202,6 +202,8 @@ class EvaluateResult(_Corrected):
     @property
     def flagged_rms_t(self) -> Optional[float]: ...
     @property
+    def multidirectional(self) -> Optional[dict[str, Any]]: ...
+    @property
     def unc_rms_t(self) -> Optional[float]: ...
     @property
     def cor_rms_t(self) -> Optional[float]: ...
@@ -310,6 +312,10 @@ class PlanNext:
     @property
     def predicted_sd_after(self) -> Optional[float]: ...
     @property
+    def predicted_by(self) -> str: ...
+    @property
+    def prediction_note(self) -> str: ...
+    @property
     def goal_sd(self) -> Optional[float]: ...
     @property
     def noise_floor(self) -> Optional[float]: ...
@@ -413,7 +419,8 @@ def plan_next(parts: _ArrayLike, names: Sequence[str],
               robot: str = "ur5", goal_sd: Optional[float] = None,
               goal_floor_multiple: Optional[float] = None, sigma_rep: float = 0.0,
               batch: int = 8, budget: int = 64, candidate_spacing: float = 0.02,
-              margin: float = 0.02, joint_norm: str = "l2") -> PlanNext:
+              margin: float = 0.02, joint_norm: str = "l2",
+              interpolation: str = "kriging") -> PlanNext:
     """Adaptive planning (docs/adaptive.md): the next batch of fiducials [m] and whether to stop."""
 def volume_part_points(lower: _ArrayLike, upper: _ArrayLike,
                        spacing: float = 0.05) -> tuple[np.ndarray, list[str]]:

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "lost_motion.hpp"
@@ -47,6 +48,24 @@ constexpr double kArcminRad = M_PI / (180.0 * 60.0);
 // The largest play auto believes: ISO 9283 figures and gear makers' data put industrial joints'
 // lost motion at 0.5-3 arc-min new, a few more worn; 10 leaves room for a worn cycloidal gear.
 constexpr double kMaxPlausiblePlayRad = 10.0 * kArcminRad;
+
+// A play is a gap: never negative, and a few arc-minutes even in a worn gear. Plays outside that
+// are the sign pattern standing in for something else (the arm's other errors on joints whose
+// directions move together, IK switching branches). The first such joint, as ": but joint j's
+// play ... is no lost motion"; empty when every play is plausible.
+std::string implausible_play(const LostMotionTerm& term) {
+  for (Eigen::Index j = 0; j < term.play_rad.size(); ++j) {
+    const double sd_rad = std::sqrt(std::max(term.covariance_rad2(j, j), 0.0));
+    const double play_rad = term.play_rad(j);
+    if (play_rad < -3.0 * sd_rad || play_rad - 3.0 * sd_rad > kMaxPlausiblePlayRad) {
+      char line[160];
+      std::snprintf(line, sizeof line, ": but joint %ld's play %.2f arcmin (sd %.2f) is no lost motion",
+                    static_cast<long>(j + 1), play_rad / kArcminRad, sd_rad / kArcminRad);
+      return line;
+    }
+  }
+  return {};
+}
 
 // Robot-frame deviations (reached minus commanded) of the fiducials' corrections: the registered
 // position R X + tau minus the command is -s R epsilon (Eq. 6).
@@ -171,7 +190,7 @@ LostMotionTerm fit_lost_motion_term(const CorrectorData& data, LostMotionMode mo
   term.covariance_rad2 = all.covariance_rad2;
   if (mode == LostMotionMode::kOn) {
     term.applied = true;
-    term.reason = "asked for (--lost-motion on)";
+    term.reason = "asked for (--lost-motion on)" + implausible_play(term);
     return term;
   }
   // The method alone and with the term, each refitted on the same folds; the term's plays are
@@ -253,17 +272,12 @@ LostMotionTerm fit_lost_motion_term(const CorrectorData& data, LostMotionMode mo
   // the fiducials' raster liked and targets visited in another order paid 4.5x for): auto
   // leaves such a term out.
   if (term.applied) {
-    for (Eigen::Index j = 0; j < term.play_rad.size(); ++j) {
-      const double sd_rad = std::sqrt(std::max(term.covariance_rad2(j, j), 0.0));
-      const double play_rad = term.play_rad(j);
-      if (play_rad < -3.0 * sd_rad || play_rad - 3.0 * sd_rad > kMaxPlausiblePlayRad) {
-        std::snprintf(line, sizeof line,
-                      ": but joint %ld's play %.2f arcmin (sd %.2f) is no lost motion, not applied",
-                      static_cast<long>(j + 1), play_rad / kArcminRad, sd_rad / kArcminRad);
-        term.reason = std::string(term.reason, 0, term.reason.size() - std::string(": applied").size()) + line;
-        term.applied = false;
-        break;
-      }
+    const std::string implausible = implausible_play(term);
+    if (!implausible.empty()) {
+      term.reason = std::string(term.reason, 0,
+                                term.reason.size() - std::string(": applied").size()) +
+                    implausible + ", not applied";
+      term.applied = false;
     }
   }
   return term;

@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/experiments/adaptive_study.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 
+#include "parallel_tasks.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/pipeline/evaluate.hpp"
+#include "vrreg/pipeline/plan_next_correction.hpp"
 #include "vrreg/pipeline/register_fiducials.hpp"
 #include "vrreg/planning/arm_configuration.hpp"
 #include "vrreg/planning/dmin_criterion.hpp"
@@ -101,18 +100,26 @@ simulation::CommandedLocation commanded(const std::string& name, Role role,
   return c;
 }
 
-RegisterOptions register_options(InterpolationMethod method, double cube_edge_m) {
+RegisterOptions register_options(const Cell& cell, InterpolationMethod method,
+                                 double cube_edge_m = 0.0) {
   RegisterOptions o;
+  o.robot = cell.testbed.nominal;  // the joint-space model reads the joints on this arm
   o.rigid_body_statistics = false;  // sigma_L is not what the study compares
   o.interpolation.method = method;
   o.interpolation.cube_edge_m = cube_edge_m;
   return o;
 }
 
-double corrected_rms_t_m(const MeasurementSet& fiducials, const MeasurementSet& targets,
-                         InterpolationMethod method, double cube_edge_m = 0.0) {
-  const RegisterResult reg = register_fiducials(fiducials, register_options(method, cube_edge_m));
-  return evaluate(reg.model, targets).summary.cor_rms_t_m;
+double corrected_rms_t_m(const Cell& cell, const MeasurementSet& fiducials,
+                         const MeasurementSet& targets, InterpolationMethod method,
+                         double cube_edge_m = 0.0, std::string* method_used = nullptr) {
+  const RegisterResult reg =
+      register_fiducials(fiducials, register_options(cell, method, cube_edge_m));
+  const EvaluateResult e = evaluate(reg.model, targets);
+  if (method_used) *method_used = to_string(e.interpolation.method);
+  // Over every target: one outside the method's support counts uncorrected (cor_tre_m keeps
+  // its registered TRE), not left out (a model that corrects none would score 0).
+  return std::sqrt(e.cor_tre_m.squaredNorm() / static_cast<double>(e.cor_tre_m.size()));
 }
 
 double robot_time_s(const AdaptiveStudyOptions& o, long long moves, long long readings) {
@@ -144,7 +151,7 @@ FixedPlanRun procedure1(const Cell& cell, const AdaptiveStudyOptions& o, std::ui
   const MeasurementSet set = measure(cell, locations, seed, time_s, run.n_readings);
   run.n_fiducials = static_cast<int>(locations.size());
   run.robot_time_s = robot_time_s(o, run.n_fiducials, run.n_readings);
-  run.rms_t_m = corrected_rms_t_m(set, targets, InterpolationMethod::kOctuplet, edge_m);
+  run.rms_t_m = corrected_rms_t_m(cell, set, targets, InterpolationMethod::kOctuplet, edge_m);
   return run;
 }
 
@@ -161,11 +168,11 @@ FixedPlanRun full_grid(const Cell& cell, const AdaptiveStudyOptions& o, std::uin
     locations.push_back(
         commanded("g" + std::to_string(i + 1), Role::kFiducial, cell.grid_m[i], q.q_rad));
   }
-  FixedPlanRun run{cell.testbed.name, seed, "grid", cell.grid_spacing_m, 0.0, "kriging"};
+  FixedPlanRun run{cell.testbed.name, seed, "grid", cell.grid_spacing_m, 0.0};
   const MeasurementSet set = measure(cell, locations, seed, time_s, run.n_readings);
   run.n_fiducials = static_cast<int>(locations.size());
   run.robot_time_s = robot_time_s(o, run.n_fiducials, run.n_readings);
-  run.rms_t_m = corrected_rms_t_m(set, targets, InterpolationMethod::kKriging);
+  run.rms_t_m = corrected_rms_t_m(cell, set, targets, o.interpolation, 0.0, &run.interpolation);
   return run;
 }
 
@@ -202,6 +209,9 @@ AdaptiveRun adaptive_loop(const Cell& cell, const AdaptiveStudyOptions& o, std::
       planning::FiducialsWithNoise m = planning::measured_fiducials(all);
       measured = std::move(m.fiducials);
       po.noise_sd_m = m.noise_sd_m;
+      if (o.interpolation != InterpolationMethod::kKriging) {
+        po.correction_sd = correction_sd_at_parts(all, register_options(cell, o.interpolation));
+      }
     }
     const planning::PlanNextResult next =
         planning::plan_next(cell.testbed.nominal, cell.parts, measured, po);
@@ -213,10 +223,20 @@ AdaptiveRun adaptive_loop(const Cell& cell, const AdaptiveStudyOptions& o, std::
       b.n_readings = readings;
       b.robot_time_s = robot_time_s(o, b.n_fiducials, readings);
       b.predicted_rms_t_m = next.has_model ? next.rms_sd_now_m : kNaN;
+      if (next.has_model) b.predicted_by = next.sd_method;
+      b.prediction_note = next.sd_note;
       const bool last = next.decision == planning::PlanNextDecision::kStop;
-      b.measured_rms_t_m = b.n_fiducials >= po.min_fit_fiducials && (o.measure_every_batch || last)
-                               ? corrected_rms_t_m(all, targets, InterpolationMethod::kKriging)
-                               : kNaN;
+      b.measured_rms_t_m = kNaN;
+      if (b.n_fiducials >= po.min_fit_fiducials && (o.measure_every_batch || last)) {
+        try {
+          b.measured_rms_t_m =
+              corrected_rms_t_m(cell, all, targets, o.interpolation, 0.0, &run.interpolation);
+        } catch (const InputError&) {
+          // Too few fiducials for the method yet (the joint-space model needs 3 equations per
+          // parameter): not measured at this batch; at STOP it is an error.
+          if (last) throw;
+        }
+      }
       run.batches.push_back(b);
     }
     if (next.decision == planning::PlanNextDecision::kStop) {
@@ -338,13 +358,9 @@ AdaptiveStudyResult run_adaptive_study(const AdaptiveStudyOptions& options) {
   }
   // Every (robot, seed) in parallel; the results robot-major, the same for any thread count.
   std::vector<SeedOutcome> outcomes(cells.size() * n_seeds);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, outcomes.size(), 1),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t k = range.begin(); k < range.end(); ++k) {
-                        outcomes[k] =
-                            run_seed(cells[k / n_seeds], options, options.seeds[k % n_seeds]);
-                      }
-                    });
+  detail::parallel_tasks(outcomes.size(), [&](std::size_t k) {
+    outcomes[k] = run_seed(cells[k / n_seeds], options, options.seeds[k % n_seeds]);
+  });
   for (SeedOutcome& s : outcomes) {
     result.adaptive.push_back(std::move(s.adaptive));
     for (FixedPlanRun& f : s.fixed) result.fixed.push_back(std::move(f));

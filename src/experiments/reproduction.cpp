@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "vrreg/experiments/reproduction.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <cmath>
 
+#include "parallel_tasks.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/simulation/acquisition.hpp"
@@ -94,14 +92,11 @@ std::vector<Reproduction> run_reproductions(const std::vector<std::uint64_t>& se
                                             const std::function<void()>& on_step) {
   options.validate();
   std::vector<Reproduction> out(seeds.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 1),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t k = range.begin(); k < range.end(); ++k) {
-                        ReproductionOptions one = options;
-                        one.seed = seeds[k];
-                        out[k] = run_reproduction(one, on_step);
-                      }
-                    });
+  detail::parallel_tasks(seeds.size(), [&](std::size_t k) {
+    ReproductionOptions one = options;
+    one.seed = seeds[k];
+    out[k] = run_reproduction(one, on_step);
+  });
   return out;
 }
 

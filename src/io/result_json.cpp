@@ -9,6 +9,7 @@
 #include "vrreg/core/format.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/kinematics/joint_distance.hpp"
+#include "vrreg/metrics/multidirectional.hpp"
 #include "vrreg/metrics/uncertainty_calibration.hpp"
 
 namespace vrreg::io {
@@ -198,6 +199,22 @@ nlohmann::json orientation_field_json(const OrientationCorrector& field) {
   return j;
 }
 
+nlohmann::json multidirectional_json(const MultidirectionalAccuracy& m) {
+  nlohmann::json directions = nlohmann::json::array();
+  for (const DirectionAccuracy& d : m.directions) {
+    directions.push_back({{"approach", approach_text(d.approach_sign)},
+                          {"n_targets", d.n_targets},
+                          {"unc_rms_t_mm", units::m_to_mm(d.unc_rms_t_m)},
+                          {"cor_rms_t_mm", units::m_to_mm(d.cor_rms_t_m)}});
+  }
+  return {{"n_points", m.n_points},
+          {"directions", directions},
+          {"unc_spread_max_mm", units::m_to_mm(m.unc_max_spread_m)},
+          {"unc_spread_mean_mm", units::m_to_mm(m.unc_mean_spread_m)},
+          {"cor_spread_max_mm", units::m_to_mm(m.cor_max_spread_m)},
+          {"cor_spread_mean_mm", units::m_to_mm(m.cor_mean_spread_m)}};
+}
+
 nlohmann::json evaluate_json(const EvaluateResult& result) {
   const ImprovementSummary& s = result.summary;
   const TargetCorrection& c = result.correction;
@@ -241,6 +258,7 @@ nlohmann::json evaluate_json(const EvaluateResult& result) {
   }
   if (result.cross_validation)
     j["cross_validation"] = cross_validation_json(*result.cross_validation);
+  if (result.multidirectional) j["multidirectional"] = multidirectional_json(*result.multidirectional);
   const int strategy = planning::strategy_number(result.strategy);
   j["strategy"] = strategy == 0 ? nlohmann::json(nullptr) : nlohmann::json(strategy);
   return j;

@@ -68,6 +68,25 @@ std::optional<OrientationEvaluation> orientation_errors(std::optional<Orientatio
   return out;
 }
 
+// ISO 9283's multi-directional accuracy over the corrected targets, from each row's approach
+// directions; none when no target point was visited from two directions.
+std::optional<MultidirectionalAccuracy> multidirectional_of(const EvaluateResult& r,
+                                                            const MeasurementSet& set,
+                                                            const std::vector<std::size_t>& rows) {
+  std::vector<std::vector<double>> signs;
+  std::vector<bool> corrected;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    signs.push_back(set.locations[rows[i]].approach_sign);
+    corrected.push_back(is_corrected(r.correction.stencils[i].status));
+  }
+  MultidirectionalAccuracy m = multidirectional_accuracy(
+      r.targets_robot_m, r.correction.uncorrected_robot_m, r.correction.corrected_robot_m, signs,
+      r.names,
+      r.configs.size() == rows.size() ? r.configs : std::vector<std::optional<int>>{}, corrected);
+  if (m.n_points == 0) return std::nullopt;
+  return m;
+}
+
 EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet& file_set,
                             const EvaluateOptions& options) {
   model.validate();
@@ -111,6 +130,7 @@ EvaluateResult evaluate_set(const RegistrationModel& model, const MeasurementSet
   pipeline_detail::labels_of(*set, rows, out.names, out.configs);
   for (const int n : out.summary.bad_targets)
     out.bad_targets.push_back(out.names[static_cast<std::size_t>(n)]);
+  out.multidirectional = multidirectional_of(out, *set, rows);
   return out;
 }
 

@@ -70,7 +70,7 @@ ReportTable runs_table(const ex::AdaptiveStudyResult& r) {
       const ex::FixedPlanRun& f = r.fixed[k];
       t.rows.push_back(
           {f.robot, std::to_string(f.seed),
-           f.plan == "grid" ? fmt::format("grid {:g} mm, kriging", 1e3 * f.cube_edge_m)
+           f.plan == "grid" ? fmt::format("grid {:g} mm, {}", 1e3 * f.cube_edge_m, f.interpolation)
                             : fmt::format("Procedure 1, d = {:.2f} mm", 1e3 * f.d_m),
            std::to_string(f.n_fiducials), std::to_string(f.n_readings),
            fmt::format("{:.1f}", f.robot_time_s / 60.0), mm(f.rms_t_m), ""});
@@ -82,9 +82,11 @@ ReportTable runs_table(const ex::AdaptiveStudyResult& r) {
 ReportFigure rms_against_fiducials(const ex::AdaptiveStudyResult& r) {
   ReportFigure f;
   f.title = "RMS_T against fiducials measured";
-  f.caption =
-      "lines: the adaptive loop per seed, batch by batch (measured, kriging); circles: Procedure "
-      "1's octuplets per cube edge; squares: the full grid with kriging";
+  const std::string method = to_string(r.options.interpolation);
+  f.caption = fmt::format(
+      "lines: the adaptive loop per seed, batch by batch (measured, {0}); circles: Procedure "
+      "1's octuplets per cube edge; squares: the full grid with {0}",
+      method);
   f.wide = true;
   for (const ex::AdaptiveRun& a : r.adaptive) {
     std::vector<double> x;
@@ -120,7 +122,8 @@ ReportFigure rms_against_fiducials(const ex::AdaptiveStudyResult& r) {
       f.data.push_back(
           {{"type", "scatter"},
            {"mode", "markers"},
-           {"name", fmt::format("{} {}", robot, grid ? "grid (kriging)" : "Procedure 1")},
+           {"name", grid ? fmt::format("{} grid ({})", robot, method)
+                         : fmt::format("{} Procedure 1", robot)},
            {"x", x},
            {"y", y},
            {"text", text},
@@ -141,9 +144,10 @@ ReportPage adaptive_study_page(const experiments::AdaptiveStudyResult& result) {
   using namespace adaptive_page;
   ReportPage page;
   page.title = "Adaptive planning study";
-  page.subtitle =
-      "plan-next -> simulate -> register (kriging) -> plan-next until STOP, against Procedure 1 "
-      "and the full grid, on the simulated test beds";
+  page.subtitle = fmt::format(
+      "plan-next -> simulate -> register ({}) -> plan-next until STOP, against Procedure 1 "
+      "and the full grid, on the simulated test beds",
+      to_string(result.options.interpolation));
   for (const ex::AdaptiveVerdict& v : result.verdicts) {
     const bool all = v.reaches && v.quarter && v.honest;
     page.verdict.push_back(

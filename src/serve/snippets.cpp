@@ -283,9 +283,51 @@ std::string krl_request_line(const SnippetOptions& options, const std::array<dou
   return line + "\n";
 }
 
+std::string krl_joints_request_line(const SnippetOptions& options,
+                                    const std::array<double, 3>& xyz_mm,
+                                    const std::vector<double>& q_rad,
+                                    const std::vector<double>& q_from_rad) {
+  // The KRL function's SWRITEs: "%.6f" for X, Y, Z, then " %.7f" per joint angle (rad).
+  std::string line = fmt::format("{} {:.6f} {:.6f} {:.6f} joints", options.model, xyz_mm[0],
+                                 xyz_mm[1], xyz_mm[2]);
+  for (const double q : q_rad) line += fmt::format(" {:.7f}", q);
+  line += " from";
+  for (const double q : q_from_rad) line += fmt::format(" {:.7f}", q);
+  return line + "\n";
+}
+
 namespace {
 
-std::string krl_function(const SnippetOptions& o, bool pose) {
+// KRL names of the joints of an E6AXIS in order: A1..A6, then the external axes E1..E6 (the
+// LWR 4+'s seventh joint is E1 on its controller).
+std::string krl_axis(int j) {
+  return j < 6 ? fmt::format("A{}", j + 1) : fmt::format("E{}", j - 5);
+}
+
+// The request of VRREG_CORRECT_JOINTS: each joint converted to rad into Q[] and F[] (SWRITE
+// formats values, not expressions), then the line written in pieces at OFS.
+std::string krl_joints_send(const SnippetOptions& o) {
+  std::string out;
+  for (int j = 0; j < o.n_joints; ++j) {
+    out += fmt::format("  Q[{0}] = Q_DEG.{1} * DEG_TO_RAD\n  F[{0}] = Q_FROM_DEG.{1} * DEG_TO_RAD\n",
+                       j + 1, krl_axis(j));
+  }
+  out += "  SWRITE(REQ[], STAT, OFS, \"" + o.model +
+         " %.6f %.6f %.6f joints\", P_SENSOR_MM.X, P_SENSOR_MM.Y, P_SENSOR_MM.Z)\n";
+  for (int j = 0; j < o.n_joints; ++j)
+    out += fmt::format("  SWRITE(REQ[], STAT, OFS, \" %.7f\", Q[{}])\n", j + 1);
+  out += "  SWRITE(REQ[], STAT, OFS, \" from\")\n";
+  for (int j = 0; j < o.n_joints; ++j)
+    out += fmt::format("  SWRITE(REQ[], STAT, OFS, \" %.7f\", F[{}])\n", j + 1);
+  out += "  SWRITE(REQ[], STAT, OFS, \"%c\", 10)\n";
+  return out;
+}
+
+enum class KrlKind { kPoint, kPose, kJoints };
+
+std::string krl_function(const SnippetOptions& o, KrlKind kind) {
+  const bool pose = kind == KrlKind::kPose;
+  const bool joints = kind == KrlKind::kJoints;
   o.validate();
   std::string auth;
   if (!o.token.empty()) {
@@ -302,9 +344,13 @@ std::string krl_function(const SnippetOptions& o, bool pose) {
         "  RET = EKI_GetString(\"vrreg\", \"Reply\", REP[])\n",
         o.token);
   }
-  const std::string name = pose ? "VRREG_CORRECT_POSE" : "VRREG_CORRECT";
-  const std::string signature = pose ? "P_SENSOR_MM:IN, P_ROBOT_MM:OUT, SD_MM:OUT, SD_MRAD:OUT"
-                                     : "P_SENSOR_MM:IN, P_ROBOT_MM:OUT, SD_MM:OUT";
+  const std::string name = pose     ? "VRREG_CORRECT_POSE"
+                           : joints ? "VRREG_CORRECT_JOINTS"
+                                    : "VRREG_CORRECT";
+  const std::string signature =
+      pose     ? "P_SENSOR_MM:IN, P_ROBOT_MM:OUT, SD_MM:OUT, SD_MRAD:OUT"
+      : joints ? "P_SENSOR_MM:IN, Q_DEG:IN, Q_FROM_DEG:IN, P_ROBOT_MM:OUT, SD_MM:OUT"
+               : "P_SENSOR_MM:IN, P_ROBOT_MM:OUT, SD_MM:OUT";
   const std::string what =
       pose
           ? "; the vision system measured the marker's pose P_SENSOR_MM, sensor frame (X, Y, Z "
@@ -314,12 +360,21 @@ std::string krl_function(const SnippetOptions& o, bool pose) {
             "; (its position's predicted sd, mm) and SD_MRAD (its orientation's, mrad; both 0 "
             "when\n"
             "; the method predicts none). Returns FALSE, P_ROBOT_MM untouched, when the service\n"
-          : "; P_SENSOR_MM: the point the vision system measured, sensor frame, mm (X, Y, Z).\n"
-            "; Returns TRUE with P_ROBOT_MM (the position to command, robot base frame, mm) and\n"
-            "; SD_MM (its predicted sd, mm; 0 when the method predicts none). Returns FALSE,\n"
-            "; P_ROBOT_MM untouched, when the service\n";
+          : "; P_SENSOR_MM: the point the vision system measured, sensor frame, mm (X, Y, Z).\n" +
+                std::string(joints ? fmt::format(
+                                         "; Q_DEG: the {} joints commanded at the point, Q_FROM_DEG: "
+                                         "those the robot comes from\n"
+                                         "; (the previous commanded point), deg (A1..A6{}), sent "
+                                         "in rad: the model's answers need them.\n",
+                                         o.n_joints, o.n_joints > 6 ? ", then E1.." : "")
+                                   : std::string()) +
+                "; Returns TRUE with P_ROBOT_MM (the position to command, robot base frame, mm) "
+                "and\n"
+                "; SD_MM (its predicted sd, mm; 0 when the method predicts none). Returns FALSE,\n"
+                "; P_ROBOT_MM untouched, when the service\n";
   const std::string send =
-      pose ? "  SWRITE(REQ[], STAT, OFS, \"" + o.model +
+      joints ? krl_joints_send(o)
+      : pose ? "  SWRITE(REQ[], STAT, OFS, \"" + o.model +
                  " %.6f %.6f %.6f abc %.6f %.6f %.6f%c\", P_SENSOR_MM.X, P_SENSOR_MM.Y, "
                  "P_SENSOR_MM.Z, P_SENSOR_MM.A, P_SENSOR_MM.B, P_SENSOR_MM.C, 10)\n"
            : "  SWRITE(REQ[], STAT, OFS, \"" + o.model +
@@ -349,17 +404,19 @@ std::string krl_function(const SnippetOptions& o, bool pose) {
       "; does not answer within {timeout} s or refuses the request (SD_MM is then minus the\n"
       "; refusal code): the caller must stop, never move on a default.\n"
       "  DECL FRAME P_SENSOR_MM, P_ROBOT_MM\n"
+      "{joints_decl}"
       "  DECL REAL SD_MM{sd_mrad_decl}, X, Y, Z, {abc_decl}SD\n"
       "  DECL EKI_STATUS RET\n"
       "  DECL STATE_T STAT\n"
       "  DECL INT OFS\n"
-      "  DECL CHAR REQ[256], REP[256]\n"
+      "  DECL CHAR REQ[{req_size}], REP[256]\n"
       "  RET = EKI_Init(\"vrreg\")\n"
       "  RET = EKI_Open(\"vrreg\")\n"
       "  $FLAG[998] = FALSE\n"
       "  $TIMER[8] = -{timeout_ms}\n"
       "  $TIMER_STOP[8] = FALSE\n"
       "{auth}"
+      "{deg_to_rad}"
       "  OFS = 0\n"
       "{send}"
       "  RET = EKI_Send(\"vrreg\", REQ[])\n"
@@ -391,13 +448,26 @@ std::string krl_function(const SnippetOptions& o, bool pose) {
       fmt::arg("timeout_ms", static_cast<int>(std::lround(o.timeout_s * 1000))),
       fmt::arg("auth", auth), fmt::arg("send", send), fmt::arg("read", read), fmt::arg("out", out),
       fmt::arg("sd_mrad_decl", pose ? ", SD_MRAD" : ""),
+      fmt::arg("joints_decl", joints ? fmt::format("  DECL E6AXIS Q_DEG, Q_FROM_DEG\n"
+                                                   "  DECL REAL Q[{0}], F[{0}]\n"
+                                                   "  DECL REAL DEG_TO_RAD\n",
+                                                   o.n_joints)
+                                     : std::string()),
+      fmt::arg("req_size", joints ? 512 : 256),
+      fmt::arg("deg_to_rad", joints ? "  DEG_TO_RAD = 0.0174532925199433\n" : ""),
       fmt::arg("abc_decl", pose ? "A, B, C, SD_ANGLE, " : ""));
 }
 
 }  // namespace
 
-std::string krl_client(const SnippetOptions& o) { return krl_function(o, false); }
+std::string krl_client(const SnippetOptions& o) {
+  return krl_function(o, o.n_joints > 0 ? KrlKind::kJoints : KrlKind::kPoint);
+}
 
-std::string krl_pose_client(const SnippetOptions& o) { return krl_function(o, true); }
+std::string krl_pose_client(const SnippetOptions& o) {
+  VRREG_THROW_UNLESS(o.n_joints == 0,
+                     "the pose function sends no joints, and the model's answers need them");
+  return krl_function(o, KrlKind::kPose);
+}
 
 }  // namespace vrreg::serve

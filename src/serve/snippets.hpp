@@ -51,9 +51,15 @@ std::string urscript_pose_request_line(const SnippetOptions& options,
 
 /// KRL: `VRREG_CORRECT(P_SENSOR_MM, P_ROBOT_MM, SD_MM)` (a DEFFCT returning TRUE on an answer)
 /// over EthernetKRL, and its EKI configuration (XML) for the controller's Config/User/Common/EthernetKRL.
+/// When the model's answers need the joints (options.n_joints > 0) the file's function is
+/// `VRREG_CORRECT_JOINTS(P_SENSOR_MM, Q_DEG, Q_FROM_DEG, P_ROBOT_MM, SD_MM)` instead (a KRL file
+/// holds the function it is named after): Q_DEG the E6AXIS commanded at the point, Q_FROM_DEG the
+/// one the robot comes from (A1..A6 deg, a seventh joint as E1), sent as `joints ... from ...`
+/// in rad.
 std::string krl_client(const SnippetOptions& options);
 /// KRL: `VRREG_CORRECT_POSE(P_SENSOR_MM, P_ROBOT_MM, SD_MM, SD_MRAD)`: the whole FRAME (X, Y, Z
-/// mm; A, B, C deg), for models registered with rigid-body fiducials.
+/// mm; A, B, C deg), for models registered with rigid-body fiducials. Throws InputError for a
+/// model whose answers need the joints (it sends none).
 std::string krl_pose_client(const SnippetOptions& options);
 std::string krl_eki_config(const SnippetOptions& options);
 
@@ -61,5 +67,11 @@ std::string krl_eki_config(const SnippetOptions& options);
 /// when `pose`), numbers as its SWRITE "%.6f" writes them.
 std::string krl_request_line(const SnippetOptions& options, const std::array<double, 6>& frame,
                              bool pose);
+/// The request line VRREG_CORRECT_JOINTS sends: X, Y, Z as "%.6f", each joint (rad, as the
+/// function converts Q_DEG and Q_FROM_DEG) as "%.7f".
+std::string krl_joints_request_line(const SnippetOptions& options,
+                                    const std::array<double, 3>& xyz_mm,
+                                    const std::vector<double>& q_rad,
+                                    const std::vector<double>& q_from_rad);
 
 }  // namespace vrreg::serve

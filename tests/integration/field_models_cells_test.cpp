@@ -99,6 +99,44 @@ TEST_F(FieldModelsOnA1, KrigingAndAutoBeatOctuplet) {
   EXPECT_EQ(automatic.cross_validation->rows.size(), 5U);
 }
 
+// The adaptive loop's stop judged by the joint-space model (plan_next's correction_sd): at the
+// targets, with their joints, the sd the model predicts is the one evaluate reports there; too
+// few fiducials give no sd and the reason.
+TEST_F(FieldModelsOnA1, CorrectionSdAtPartsIsTheModelsPredictedSd) {
+  RegisterOptions options;
+  options.sigma_rep_m = 1e-4;
+  options.robot = simulation::ur5_testbed().nominal;
+  options.interpolation.method = InterpolationMethod::kJoint;
+  std::vector<planning::PartPlan> parts;
+  for (const Location& loc : set_->locations) {
+    if (loc.role != Role::kTarget) continue;
+    planning::PartPlan& p = parts.emplace_back();
+    p.name = loc.point;
+    p.robot_m = loc.robot_m;
+    p.q_rad = Eigen::Map<const Eigen::VectorXd>(loc.q_rad.data(), std::ssize(loc.q_rad));
+    p.reachable = true;
+  }
+  ASSERT_EQ(parts.size(), 120U);
+  const planning::CorrectionSd sd = correction_sd_at_parts(*set_, options)(parts);
+  ASSERT_TRUE(sd.sd_m) << sd.note;
+  EXPECT_EQ(sd.method, "joint");
+  const EvaluateResult joint = run(InterpolationMethod::kJoint);
+  ASSERT_EQ(joint.correction.predicted_sd_m.size(), 120);
+  for (Eigen::Index i = 0; i < 120; ++i) {
+    EXPECT_NEAR((*sd.sd_m)(i), joint.correction.predicted_sd_m(i),
+                0.02 * joint.correction.predicted_sd_m(i))
+        << parts[static_cast<std::size_t>(i)].name;
+  }
+
+  MeasurementSet few = nodes([](const Eigen::Vector3i& n, Role role) {
+    const int d = (n - Eigen::Vector3i(4, 6, 4)).cwiseAbs().maxCoeff();
+    return role == Role::kFiducial && even(n) && d <= 2;
+  });
+  const planning::CorrectionSd none = correction_sd_at_parts(few, options)(parts);
+  EXPECT_FALSE(none.sd_m);
+  EXPECT_THAT(none.note, ::testing::HasSubstr("equations per parameter"));
+}
+
 // Every second node (50 mm, 210 fiducials): joint 1's 4 deg transmission error is sampled at 42
 // azimuths only, none of them a target's. A Legendre series is free between them (0.16 mm
 // here); the periodic term finds the period and carries the wave to the targets (0.10 mm).

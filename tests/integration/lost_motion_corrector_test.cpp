@@ -127,6 +127,64 @@ TEST(LostMotionCorrectorCell, WithoutLostMotionAutoLeavesEveryNumberAsOff) {
               a.summary.cor_rms_t_m / floor_m(), a.calibration.rms_ratio);
 }
 
+// The KUKA LWR 4+ test bed (its grid in configuration 1: 1 423 fiducials, 150 targets, one reading
+// each; the test bed's errors with its transmission error and gravity sag) with lost motion of
+// 0.2-0.8 arc-min per joint, and without: the joint-space model with the term on auto reaches
+// the noise floor on both with a calibrated sd. Lost motion this small moves the LWR's marker by
+// 0.019 mm RMS (measured on the same path without any other error), under the floor's 0.113 mm, so
+// the term does not enter; asked for anyway (on), its plays stand in for the other errors on
+// wrist joints whose directions move together, and the reason says so.
+MeasurementSet simulate_lwr_cell(const std::vector<double>& lost_motion_rad) {
+  const simulation::Testbed lwr = simulation::lwr4_testbed();
+  simulation::SimulationOptions o;
+  o.seed = 2;
+  o.errors = lwr.default_errors;
+  o.errors->robot.lost_motion_rad = lost_motion_rad;
+  const MeasurementSet set = experiments::to_measurement_set(
+      simulation::simulate_dataset(lwr, simulation::Dataset::kGrid, o));
+  MeasurementSet config1 = set;
+  config1.locations.clear();
+  for (const Location& loc : set.locations) {
+    if (loc.config == 1) config1.locations.push_back(loc);
+  }
+  return config1;
+}
+
+TEST(LostMotionCorrectorCell, KukaGridStaysAtTheFloorWithOrWithoutLostMotion) {
+  if (vrreg::testing::sanitized()) GTEST_SKIP();
+  // sqrt(3 (0.03^2 + 0.058^2)) mm: repeatability and one tracker reading.
+  const double lwr_floor_m = std::sqrt(3.0 * (0.03e-3 * 0.03e-3 + 0.058e-3 * 0.058e-3));
+  const std::vector<double> play_rad = {0.8 * kArcmin, 0.2 * kArcmin, 0.2 * kArcmin, 0.7 * kArcmin,
+                                        0.6 * kArcmin, 0.5 * kArcmin, 0.4 * kArcmin};
+  for (const bool lost_motion : {true, false}) {
+    const MeasurementSet set = simulate_lwr_cell(lost_motion ? play_rad : std::vector<double>{});
+    ASSERT_EQ(set.select(Role::kFiducial).size(), 1423U);
+    RegisterOptions options;
+    options.robot = simulation::lwr4_testbed().nominal;
+    options.interpolation.method = InterpolationMethod::kJoint;
+    options.lost_motion = LostMotionMode::kAuto;
+    const RegistrationModel model = register_fiducials(set, options).model;
+    ASSERT_TRUE(model.corrector && model.corrector->lost_motion());
+    const EvaluateResult r = evaluate(model, set);
+    std::printf("LWR grid %s lost motion: cor RMS_T %.4f mm = %.3fx floor, TRE/sd %.3f; %s\n",
+                lost_motion ? "with" : "without", 1e3 * r.summary.cor_rms_t_m,
+                r.summary.cor_rms_t_m / lwr_floor_m, r.calibration.rms_ratio,
+                model.corrector->lost_motion()->reason.c_str());
+    EXPECT_EQ(r.correction.n_flagged, 0);
+    EXPECT_LE(r.summary.cor_rms_t_m, 1.10 * lwr_floor_m);
+    EXPECT_GE(r.calibration.rms_ratio, 0.8);
+    EXPECT_LE(r.calibration.rms_ratio, 1.25);
+    EXPECT_FALSE(model.corrector->lost_motion()->applied);
+    if (!lost_motion) continue;
+    options.lost_motion = LostMotionMode::kOn;
+    const RegistrationModel forced = register_fiducials(set, options).model;
+    ASSERT_TRUE(forced.corrector && forced.corrector->lost_motion());
+    EXPECT_TRUE(forced.corrector->lost_motion()->applied);
+    EXPECT_NE(forced.corrector->lost_motion()->reason.find("is no lost motion"), std::string::npos)
+        << forced.corrector->lost_motion()->reason;
+  }
+}
+
 // The table of docs/joint-space-model.md ("In the corrector"): every method with the term off and
 // auto, on both cells (about a minute: run with --gtest_also_run_disabled_tests).
 TEST(LostMotionCorrectorCell, DISABLED_EveryMethodOffAndAuto) {

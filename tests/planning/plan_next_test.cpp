@@ -133,6 +133,20 @@ std::array<KrigingHyperparameters, 3> known_hyperparameters() {
   return h;
 }
 
+// The second call of a loop: the three parts, the first (space-filling) batch measured without
+// error, the known hyperparameters.
+struct SecondCall {
+  SerialChain chain = ur5_with_sphere();
+  PlanNextOptions o = small_options();
+  std::vector<PartPoint> parts = three_parts();
+  MeasuredFiducials measured{};
+  SecondCall() {
+    const PlanNextResult first = plan_next(chain, parts, {}, o);
+    measured = {batch_matrix(first), batch_matrix(first)};
+    o.hyperparameters = known_hyperparameters();
+  }
+};
+
 TEST(KrigingDesign, PosteriorCovarianceMatchesTheAugmentedSystem) {
   Random rng(7);
   const Points3 design_m = testing::random_points(rng, 45, 0.08, {0.45, -0.1, 0.25});
@@ -245,12 +259,8 @@ TEST(PlanNext, GreedyPickIsTheBruteForceBest) {
 }
 
 TEST(PlanNext, PredictedSdAfterTheBatchIsThePosteriorWithTheBatch) {
-  const SerialChain chain = ur5_with_sphere();
-  PlanNextOptions o = small_options();
-  const std::vector<PartPoint> parts = three_parts();
-  const PlanNextResult first = plan_next(chain, parts, {}, o);
-  MeasuredFiducials measured{batch_matrix(first), batch_matrix(first)};
-  o.hyperparameters = known_hyperparameters();
+  SecondCall call;
+  auto& [chain, o, parts, measured] = call;
   o.batch_size = 5;
   const PlanNextResult r = plan_next(chain, parts, measured, o);
   ASSERT_TRUE(r.ok());
@@ -279,12 +289,8 @@ TEST(PlanNext, PredictedSdAfterTheBatchIsThePosteriorWithTheBatch) {
 }
 
 TEST(PlanNext, StopsAtTheGoalOrTheBudget) {
-  const SerialChain chain = ur5_with_sphere();
-  PlanNextOptions o = small_options();
-  const std::vector<PartPoint> parts = three_parts();
-  const PlanNextResult first = plan_next(chain, parts, {}, o);
-  MeasuredFiducials measured{batch_matrix(first), batch_matrix(first)};
-  o.hyperparameters = known_hyperparameters();
+  SecondCall call;
+  auto& [chain, o, parts, measured] = call;
   PlanNextOptions easy = o;
   easy.goal_sd_m = 1.0;
   const PlanNextResult reached = plan_next(chain, parts, measured, easy);
@@ -320,6 +326,87 @@ TEST(PlanNext, StopsAtTheGoalOrTheBudget) {
   const PlanNextResult far = plan_next(chain, {{"far", {2.0, 0.0, 0.2}}}, {}, o);
   EXPECT_EQ(far.status, PlanStatus::kUnreachable);
   EXPECT_NE(far.message.find("far"), std::string::npos);
+}
+
+// Another correction's sd at the parts (the joint-space model's, say) is what the goal judges:
+// "now" is its, "after" is not predicted and the 1 % rule is off, the batch is kriging's.
+TEST(PlanNext, AnotherCorrectionsSdIsJudgedAgainstTheGoal) {
+  SecondCall call;
+  auto& [chain, o, parts, measured] = call;
+  const PlanNextResult kriging = plan_next(chain, parts, measured, o);
+  ASSERT_EQ(kriging.decision, PlanNextDecision::kContinue);
+  EXPECT_EQ(kriging.sd_method, "kriging");
+
+  const Eigen::Vector3d own_sd_m(0.03e-3, 0.04e-3, 0.05e-3);
+  std::vector<PartPlan> seen;
+  PlanNextOptions with = o;
+  with.goal_sd_m = 0.01e-3;  // below both: the batch is planned
+  with.correction_sd = [&](const std::vector<PartPlan>& p) {
+    seen = p;
+    return CorrectionSd{own_sd_m, "joint", ""};
+  };
+  const PlanNextResult r = plan_next(chain, parts, measured, with);
+  ASSERT_EQ(r.decision, PlanNextDecision::kContinue);
+  EXPECT_EQ(r.sd_method, "joint");
+  ASSERT_EQ(seen.size(), 3u);  // the parts with their joints, input order
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(seen[i].name, parts[i].name);
+    EXPECT_TRUE(seen[i].reachable);
+    EXPECT_EQ(seen[i].q_rad.size(), 6);
+  }
+  EXPECT_EQ(r.part_sd_now_m, Eigen::VectorXd(own_sd_m));
+  EXPECT_NEAR(r.rms_sd_now_m, std::sqrt(own_sd_m.squaredNorm() / 3.0), 1e-18);
+  ASSERT_EQ(r.locations.size(), kriging.locations.size());
+  for (std::size_t k = 0; k < r.locations.size(); ++k)
+    EXPECT_EQ(r.locations[k].robot_m, kriging.locations[k].robot_m);
+  ASSERT_EQ(r.part_sd_after_m.size(), 3);
+  EXPECT_TRUE(r.part_sd_after_m.array().isNaN().all());
+  EXPECT_TRUE(std::isnan(r.rms_sd_after_m));
+  PlanNextOptions flat = with;
+  flat.min_relative_gain = 0.99;  // stops kriging's loop (StopsAtTheGoalOrTheBudget), not this
+  EXPECT_EQ(plan_next(chain, parts, measured, flat).decision, PlanNextDecision::kContinue);
+
+  // The goal between the two predictions: kriging's goes on, the other correction's stops.
+  PlanNextOptions between = with;
+  between.goal_sd_m = 0.5 * (r.rms_sd_now_m + kriging.rms_sd_now_m);
+  ASSERT_LT(r.rms_sd_now_m, between.goal_sd_m);
+  ASSERT_GT(kriging.rms_sd_now_m, between.goal_sd_m);
+  const PlanNextResult stop = plan_next(chain, parts, measured, between);
+  EXPECT_EQ(stop.decision, PlanNextDecision::kStop);
+  EXPECT_EQ(stop.reason, "the goal is reached");
+  between.correction_sd = {};
+  EXPECT_EQ(plan_next(chain, parts, measured, between).decision, PlanNextDecision::kContinue);
+
+  // No sd yet (too few fiducials for it): kriging's, with the reason.
+  PlanNextOptions none = o;
+  none.correction_sd = [](const std::vector<PartPlan>&) {
+    return CorrectionSd{std::nullopt, "joint", "too few fiducials"};
+  };
+  const PlanNextResult fallback = plan_next(chain, parts, measured, none);
+  EXPECT_EQ(fallback.sd_method, "kriging");
+  EXPECT_EQ(fallback.sd_note, "too few fiducials");
+  EXPECT_EQ(fallback.part_sd_now_m, kriging.part_sd_now_m);
+
+  // A wrong count or a value that is not a finite sd is refused.
+  PlanNextOptions bad = o;
+  bad.correction_sd = [](const std::vector<PartPlan>&) {
+    return CorrectionSd{Eigen::VectorXd::Constant(2, 1e-4), "joint", ""};
+  };
+  EXPECT_THROW(plan_next(chain, parts, measured, bad), InputError);
+  bad.correction_sd = [](const std::vector<PartPlan>&) {
+    return CorrectionSd{Eigen::Vector3d(1e-4, std::nan(""), 1e-4), "joint", ""};
+  };
+  EXPECT_THROW(plan_next(chain, parts, measured, bad), InputError);
+
+  // Before any model (the space-filling start) the hook is not asked.
+  PlanNextOptions start = small_options();
+  bool asked = false;
+  start.correction_sd = [&](const std::vector<PartPlan>&) {
+    asked = true;
+    return CorrectionSd{};
+  };
+  EXPECT_TRUE(plan_next(chain, parts, {}, start).space_filling);
+  EXPECT_FALSE(asked);
 }
 
 // A goal as a multiple of the noise floor sqrt(3 (sigma_rep^2 + sigma_opt^2 / K)): unknown before

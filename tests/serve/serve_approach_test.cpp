@@ -229,6 +229,48 @@ TEST(SnippetApproach, UrscriptSendsJointsAndFromWhenTheModelNeedsThem) {
   EXPECT_THROW((void)urscript_client(s), InputError);
 }
 
+// The KRL file's function is VRREG_CORRECT_JOINTS when the model's answers need joints: each
+// E6AXIS joint (A1..A6, a seventh as E1) converted to rad and written after "joints" and "from",
+// the line reading back as the joints and approach signs meant; the pose function refuses.
+TEST(SnippetApproach, KrlSendsJointsAndFromWhenTheModelNeedsThem) {
+  SnippetOptions s;
+  s.model = "cell";
+  s.port = 30401;
+  EXPECT_THAT(krl_client(s), HasSubstr("DEFFCT BOOL VRREG_CORRECT(P_SENSOR_MM:IN,"));
+  EXPECT_THAT(krl_client(s), Not(HasSubstr("Q_DEG")));
+  s.n_joints = 6;
+  const std::string program = krl_client(s);
+  EXPECT_THAT(program, HasSubstr("DEFFCT BOOL VRREG_CORRECT_JOINTS(P_SENSOR_MM:IN, Q_DEG:IN, "
+                                 "Q_FROM_DEG:IN, P_ROBOT_MM:OUT, SD_MM:OUT)\n"));
+  for (const char* part :
+       {"  DECL E6AXIS Q_DEG, Q_FROM_DEG\n", "  DECL REAL Q[6], F[6]\n",
+        "  DEG_TO_RAD = 0.0174532925199433\n", "  Q[1] = Q_DEG.A1 * DEG_TO_RAD\n",
+        "  F[6] = Q_FROM_DEG.A6 * DEG_TO_RAD\n",
+        "  SWRITE(REQ[], STAT, OFS, \"cell %.6f %.6f %.6f joints\", P_SENSOR_MM.X, P_SENSOR_MM.Y, "
+        "P_SENSOR_MM.Z)\n",
+        "  SWRITE(REQ[], STAT, OFS, \" %.7f\", Q[6])\n", "  SWRITE(REQ[], STAT, OFS, \" from\")\n",
+        "  SWRITE(REQ[], STAT, OFS, \" %.7f\", F[1])\n", "  SWRITE(REQ[], STAT, OFS, \"%c\", 10)\n",
+        "  DECL CHAR REQ[512], REP[256]\n"}) {
+    EXPECT_THAT(program, HasSubstr(part)) << part;
+  }
+  EXPECT_THAT(program, Not(HasSubstr("Q[7]")));
+  // The SWRITEs' text, as krl_joints_request_line writes it, reads back as meant.
+  const std::vector<double> q = {0.1, -1.2, 1.5, -1.9, -1.5708, 0.25};
+  const std::vector<double> q_from = {0.2, -1.3, 1.5, -1.8, -1.5708, 0.0};
+  const std::string line = krl_joints_request_line(s, {412.5, -90.0, 310.0}, q, q_from);
+  EXPECT_EQ(line.substr(0, 57), "cell 412.500000 -90.000000 310.000000 joints 0.1000000 -1");
+  const PointRequest r = point_of(line.substr(0, line.size() - 1));
+  ASSERT_EQ(r.joints_rad.size(), 6u);
+  EXPECT_NEAR(r.joints_rad[1], -1.2, 1e-12);
+  EXPECT_EQ(r.approach_sign, (std::vector<double>{-1, 1, 0, -1, 0, 1}));
+  // The LWR 4+: the seventh joint is E1.
+  s.n_joints = 7;
+  const std::string lwr = krl_client(s);
+  EXPECT_THAT(lwr, HasSubstr("  Q[7] = Q_DEG.E1 * DEG_TO_RAD\n"));
+  EXPECT_THAT(lwr, HasSubstr("  DECL REAL Q[7], F[7]\n"));
+  EXPECT_THROW((void)krl_pose_client(s), InputError);
+}
+
 // A UR5 cell with lost motion, made here: a joint-space lattice visited in serpentine order (each
 // location's approach directions from that order), the arm reaching FK(q - b / 2 * s), plus a
 // smooth error and 0.01 mm noise; registered with kriging and the lost-motion term.

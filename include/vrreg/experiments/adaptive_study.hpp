@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The adaptive-planning study (docs/adaptive.md): on a simulated test bed, the loop plan next ->
-// measure -> register (kriging) -> plan next until it stops, at the paper's part points (the UR5's
+// measure -> register -> plan next until it stops, at the paper's part points (the UR5's
 // 120 dataset-B targets, the LWR 4+'s 150 grid targets in one arm configuration), against
 // Procedure 1's octuplet cubes at each of dataset B's cube edges and against the full grid
-// registered with kriging, counting fiducials, readings and robot time.
+// registered with the loop's correction, counting fiducials, readings and robot time.
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "vrreg/correction/interpolation.hpp"
 
 namespace vrreg::experiments {
 
@@ -29,6 +31,12 @@ struct AdaptiveStudyOptions {
   /// refit moves the prediction by more than 1 % between batches, see docs/adaptive.md).
   double min_relative_gain = 0.0;
   double candidate_spacing_m = 0.02;  ///< adaptive candidate lattice spacing [m]
+  /// What the loop and the grid correct with (the robot given for the joint-space model): the
+  /// loop's measured RMS_T, and its predicted sd, goal and stop (PlanNextOptions::correction_sd
+  /// unless kriging). The joint-space model by default: the test beds' error is the joints'
+  /// transmission error on scales of 10-50 mm, which kriging on fiducials tens of millimetres
+  /// apart does not resolve (docs/adaptive.md).
+  InterpolationMethod interpolation = InterpolationMethod::kJoint;
   /// Procedure 1's cube edges a [m] (octuplets, d = sqrt(3)/2 a); empty: dataset B's ten,
   /// 50 to 5 mm.
   std::vector<double> cube_edges_m{};
@@ -47,7 +55,10 @@ struct AdaptiveBatch {
   long long n_readings = 0;  ///< tracker readings so far (fiducials x repeats)
   double robot_time_s = 0.0;  ///< n_fiducials moves and n_readings readings at the options' rates
   double predicted_rms_t_m = 0.0;  ///< plan_next's predicted RMS_T now [m]; NaN without a model
-  double measured_rms_t_m = 0.0;   ///< kriging on the fiducials so far, at the targets [m]; NaN
+  std::string predicted_by{};  ///< the method that predicted it (PlanNextResult::sd_method)
+  std::string prediction_note{};  ///< why the study's method did not (PlanNextResult::sd_note)
+  double measured_rms_t_m = 0.0;   ///< the options' correction of the fiducials so far, at all
+                                   ///< targets (any outside its support uncorrected) [m]; NaN
                                    ///< when not measured (measure_every_batch off)
 };
 
@@ -55,6 +66,7 @@ struct AdaptiveBatch {
 struct AdaptiveRun {
   std::string robot{};
   std::uint64_t seed = 0;
+  std::string interpolation{};  ///< the correction measured and predicted (auto: as chosen)
   std::vector<AdaptiveBatch> batches{};  ///< in order; the last is the state at STOP
   std::string stop_reason{};
   /// Measured / predicted RMS_T at STOP (the stopping prediction's honesty).
@@ -68,11 +80,11 @@ struct FixedPlanRun {
   std::string plan{};         ///< "procedure1" or "grid"
   double cube_edge_m = 0.0;   ///< Procedure 1: a [m]; grid: its spacing [m]
   double d_m = 0.0;           ///< Procedure 1: sqrt(3)/2 a [m]; grid: 0
-  std::string interpolation{};  ///< "octuplet" (the paper's Eq. 7) or "kriging"
+  std::string interpolation{};  ///< "octuplet" (the paper's Eq. 7), or the study's for the grid
   int n_fiducials = 0;
   long long n_readings = 0;
   double robot_time_s = 0.0;
-  double rms_t_m = 0.0;  ///< corrected RMS_T at the targets [m]
+  double rms_t_m = 0.0;  ///< corrected RMS_T at the targets [m] (any not corrected: uncorrected)
 };
 
 /// The done-when criteria for one test bed and seed.
@@ -105,10 +117,10 @@ AdaptiveStudyOptions quick_study_options(AdaptiveStudyOptions options);
 
 /// Runs the study: per robot and seed (seeds in parallel) the adaptive loop (planning::plan_next
 /// with the goal, batch, budget and gain rule of the options; each batch simulated with simulation::simulate_plan
-/// at a time of its own, so its noise is drawn afresh; kriging registration after each batch),
+/// at a time of its own, so its noise is drawn afresh; registration with options.interpolation after each batch),
 /// Procedure 1 (planning::make_plan, half-width a/2 and spacing a: the octuplet of section 6's
 /// cube at d = sqrt(3)/2 a, registered with the paper's octuplet correction, Eq. 7) and the grid
-/// (kriging), each evaluated at the same measured targets (Eq. 4).
+/// (options.interpolation), each evaluated at the same measured targets (Eq. 4).
 AdaptiveStudyResult run_adaptive_study(const AdaptiveStudyOptions& options);
 
 }  // namespace vrreg::experiments

@@ -26,8 +26,13 @@ nlohmann::json orientation_field_json(const OrientationCorrector& field);
 /// `play_arcmin`, `sd_arcmin`), `cv_rms_with_mm`, `cv_rms_without_mm`, `judged_by`,
 /// `n_compared`, `reason`. register_json holds it when the term entered the correction.
 nlohmann::json lost_motion_result_json(const LostMotionTerm& term);
+/// ISO 9283's multi-directional accuracy: `n_points`, `directions` (`approach`, `n_targets`,
+/// `unc_rms_t_mm`, `cor_rms_t_mm`), `unc_spread_max_mm`, `unc_spread_mean_mm`,
+/// `cor_spread_max_mm`, `cor_spread_mean_mm`.
+nlohmann::json multidirectional_json(const MultidirectionalAccuracy& m);
 /// evaluate: RMS_T (Eq. 4) both ways over the corrected targets, gamma, N_bad, the flagged ones
-/// apart, the predicted sd and its calibration, the strategy used.
+/// apart, the predicted sd and its calibration, the strategy used, and `multidirectional` when
+/// some target point was visited from two approach directions.
 nlohmann::json evaluate_json(const EvaluateResult& result);
 /// The same with the Procedure 2 details only the model knows (joint norm, Strategy 3's
 /// registration fiducials and seed), as `vrreg evaluate --json` prints it.

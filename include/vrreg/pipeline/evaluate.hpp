@@ -14,6 +14,7 @@
 #include "vrreg/kinematics/joint_distance.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
 #include "vrreg/metrics/improvement.hpp"
+#include "vrreg/metrics/multidirectional.hpp"
 #include "vrreg/metrics/uncertainty_calibration.hpp"
 #include "vrreg/pipeline/field_model.hpp"
 #include "vrreg/pipeline/interpolation_choice.hpp"
@@ -83,6 +84,9 @@ struct EvaluateResult {
   UncertaintyCalibration calibration{};
   /// When the model's fiducials and the targets carry measured and commanded orientations.
   std::optional<OrientationEvaluation> orientation{};
+  /// ISO 9283's multi-directional accuracy over the corrected targets (metrics/multidirectional.hpp),
+  /// when some target point was visited from more than one approach direction.
+  std::optional<MultidirectionalAccuracy> multidirectional{};
 
   /// Every target evaluated, corrected or not.
   [[nodiscard]] int n_targets() const { return static_cast<int>(unc_tre_m.size()); }

@@ -8,6 +8,7 @@
 // batch is a space-filling (greedy maximin) design over the parts' volume.
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +39,17 @@ struct FiducialsWithNoise {
 };
 FiducialsWithNoise measured_fiducials(const MeasurementSet& set);
 
+/// The predicted sd of the correction a loop will correct with, when that is not kriging (e.g.
+/// the joint-space model), at the part points: what plan_next's goal and stop rule then judge.
+struct CorrectionSd {
+  /// Per part point (input order) [m]; empty when the correction cannot give one yet (`note`).
+  std::optional<Eigen::VectorXd> sd_m{};
+  std::string method{};  ///< the method that answered (auto: the one it chose)
+  std::string note{};    ///< why sd_m is empty (too few fiducials, parts outside its support)
+};
+/// Called with the part points and their joints (reachable, plan_next's arm configuration).
+using CorrectionSdAtParts = std::function<CorrectionSd(const std::vector<PartPlan>& parts)>;
+
 /// What to plan next.
 struct PlanNextOptions {
   /// Goal: the predicted RMS_T at the parts, sqrt(mean over parts of sd^2) [m] (> 0), unless
@@ -67,6 +79,12 @@ struct PlanNextOptions {
   /// an earlier cell); their trend degree is the one the corrector would use.
   std::optional<std::array<KrigingHyperparameters, 3>> hyperparameters{};
   KrigingKernel kernel = KrigingKernel::matern52;  ///< with given hyperparameters
+  /// The correction the measured fiducials will be corrected with, when it is not kriging
+  /// (pipeline::correction_sd_at_parts): its predicted sd at the parts is the "now" that the
+  /// goal is judged on; "after" is not predicted (NaN) and min_relative_gain does not apply
+  /// (the goal and the budget stop the loop). The batch is still the one that lowers kriging's
+  /// posterior variance most. Empty, or an answer without sd: kriging's own prediction.
+  CorrectionSdAtParts correction_sd{};
   ArmConfigurationOptions arm{};   ///< tool orientation, norm, psi, home joints (as plan)
   std::string label_prefix = "n";  ///< location k (1-based, counting measured) is "<prefix>k"
   long long max_candidates = 50'000;
@@ -90,7 +108,7 @@ struct PlanNextResult {
   std::vector<PlannedLocation> locations{};  ///< the batch, visiting order (empty on stop)
   /// Predicted sd of a corrected part point [m]: sqrt(sum over axes of the latent posterior
   /// variance times latent_sd_scale^2, plus the nugget variance), now and with the batch added
-  /// (empty without a model).
+  /// (empty without a model); with correction_sd, that correction's now and NaN after.
   Eigen::VectorXd part_sd_now_m{};
   Eigen::VectorXd part_sd_after_m{};
   /// The goal used [m]: goal_sd_m, or the floor multiple times the noise floor; NaN when the
@@ -101,6 +119,9 @@ struct PlanNextResult {
   double rms_sd_now_m = 0.0;    ///< sqrt(mean part_sd_now_m^2) [m]; NaN without a model
   double rms_sd_after_m = 0.0;  ///< the same after the batch [m]; NaN without a model
   bool has_model = false;
+  /// The method whose predicted sd part_sd_now_m is: "kriging", or the correction_sd's method.
+  std::string sd_method = "kriging";
+  std::string sd_note{};  ///< why correction_sd gave no sd, when it was asked and did not
   /// Per field component (when has_model): the kriging corrector's, on its inputs
   /// (KrigingCorrectorDesign); with given hyperparameters, Cartesian.
   std::array<KrigingDesignModel, 3> model{};
