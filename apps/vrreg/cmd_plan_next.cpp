@@ -157,7 +157,11 @@ void run_plan_next_unchecked(const PlanNextArgs& args) {
       RegisterOptions register_options;
       register_options.interpolation.method = method;
       register_options.robot = setup.chain;  // the joints in the file are on the plan's chain
-      options.correction_sd = correction_sd_at_parts(std::move(set), register_options);
+      try {
+        options.correction_sd = correction_sd_at_parts(std::move(set), register_options);
+      } catch (const InputError& e) {
+        throw InputError(args.measured + ": " + e.what());
+      }
     }
   }
 

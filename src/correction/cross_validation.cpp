@@ -36,23 +36,6 @@ std::vector<int> unit_counts(const std::vector<Eigen::Index>& unit_of, Use use) 
   return count;
 }
 
-// Predicts every column of `held_out` with `fitted`, in the method's blocks.
-MethodPredictions predict_held_out(const FittedMethod& fitted, const CorrectorData& held_out) {
-  const Eigen::Index n = held_out.size();
-  MethodPredictions p;
-  p.corrections_sensor_m.setZero(3, n);
-  p.stencils.resize(static_cast<std::size_t>(n));
-  if (fitted.has_own_sd()) p.sd_m.resize(n);
-  const MethodQuery query{held_out.registered_robot_m, held_out.fiducials_robot_m,
-                          held_out.joints_rad, held_out.sequence};
-  fitted.check_query(query);
-  const Eigen::Index block = std::max<Eigen::Index>(fitted.block_size(), 1);
-  for (Eigen::Index begin = 0; begin < n; begin += block) {
-    fitted.predict(query, begin, std::min(n, begin + block), p);
-  }
-  return p;
-}
-
 // Which held-out set each fiducial is in (-1: never held out): its fold, or in a large cell
 // one sample of about kLargeCellHeldOut fiducials, every s-th fold unit of fold 0 (a seeded
 // random share of the units, so spread over the volume), predicted by one model fitted on all
@@ -86,6 +69,24 @@ std::vector<int> held_out_groups(Eigen::Index n, const std::vector<int>& fold_of
 }
 
 }  // namespace
+
+MethodPredictions detail::predict_held_out(const FittedMethod& fitted,
+                                            const CorrectorData& held_out) {
+  const Eigen::Index n = held_out.size();
+  MethodPredictions p;
+  p.corrections_sensor_m.setZero(3, n);
+  p.stencils.resize(static_cast<std::size_t>(n));
+  if (fitted.has_own_sd()) p.sd_m.resize(n);
+  const MethodQuery query{held_out.registered_robot_m, held_out.fiducials_robot_m,
+                          held_out.joints_rad, held_out.sequence};
+  fitted.check_query(query);
+  const Eigen::Index block = std::max<Eigen::Index>(fitted.block_size(), 1);
+  for (Eigen::Index begin = 0; begin < n; begin += block) {
+    fitted.predict(query, begin, std::min(n, begin + block), p);
+  }
+  return p;
+}
+
 
 std::vector<Eigen::Index> fold_units(const ConstPoints3Ref& positions_m) {
   const Eigen::Index n = positions_m.cols();
@@ -191,7 +192,7 @@ CrossValidationRow cross_validate(InterpolationMethod method, const CorrectorDat
     const FitOutcome model = all.fitted->refit(trained, settings);
     if (!model.fitted) continue;  // this fold's training set cannot carry the method
     const CorrectorData held_out = data.subset(test);
-    const MethodPredictions p = predict_held_out(*model.fitted, held_out);
+    const MethodPredictions p = detail::predict_held_out(*model.fitted, held_out);
     const Eigen::Vector3d lo_m = trained.fiducials_robot_m.rowwise().minCoeff();
     const Eigen::Vector3d hi_m = trained.fiducials_robot_m.rowwise().maxCoeff();
     for (std::size_t i = 0; i < test.size(); ++i) {

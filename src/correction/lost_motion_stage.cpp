@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lost_motion.hpp"
+#include "method_support.hpp"
 #include "vrreg/core/check.hpp"
 #include "vrreg/correction/correction_guard.hpp"
 #include "vrreg/correction/cross_validation.hpp"
@@ -74,22 +75,6 @@ Points3 deviation_robot_m(const CorrectorData& data) {
   return -T.scale * (T.rotation * data.corrections_sensor_m);
 }
 
-MethodPredictions predict_fold(const FittedMethod& fitted, const CorrectorData& held_out) {
-  const Eigen::Index n = held_out.size();
-  MethodPredictions p;
-  p.corrections_sensor_m.setZero(3, n);
-  p.stencils.resize(static_cast<std::size_t>(n));
-  if (fitted.has_own_sd()) p.sd_m.resize(n);
-  if (fitted.judges_gaps()) p.gap_sd_m.setZero(n);
-  const MethodQuery query{held_out.registered_robot_m, held_out.fiducials_robot_m,
-                          held_out.joints_rad, held_out.sequence};
-  fitted.check_query(query);
-  const Eigen::Index block = std::max<Eigen::Index>(fitted.block_size(), 1);
-  for (Eigen::Index begin = 0; begin < n; begin += block)
-    fitted.predict(query, begin, std::min(n, begin + block), p);
-  return p;
-}
-
 }  // namespace
 
 std::string lost_motion_unavailable(const CorrectorData& data) {
@@ -135,7 +120,7 @@ LostMotionFit backfit_plays(const kinematics::SerialChain& chain, const Correcto
                             const FittedMethod& plain, const MethodSettings& settings,
                             FitOutcome* staged_out) {
   CorrectorData left = data;
-  left.corrections_sensor_m -= predict_fold(plain, data).corrections_sensor_m;
+  left.corrections_sensor_m -= predict_held_out(plain, data).corrections_sensor_m;
   LostMotionFit fit = fit_lost_motion(chain, data.joints_rad, data.approach_sign,
                                       data.fiducials_robot_m, deviation_robot_m(left), 1);
   for (int pass = 0; pass < 2; ++pass) {
@@ -143,7 +128,7 @@ LostMotionFit backfit_plays(const kinematics::SerialChain& chain, const Correcto
     FitOutcome refit = plain.refit(staged, settings);
     if (!refit.fitted) break;
     left = data;
-    left.corrections_sensor_m -= predict_fold(*refit.fitted, data).corrections_sensor_m;
+    left.corrections_sensor_m -= predict_held_out(*refit.fitted, data).corrections_sensor_m;
     fit = fit_lost_motion(chain, data.joints_rad, data.approach_sign, data.fiducials_robot_m,
                           deviation_robot_m(left), 1);
     if (staged_out != nullptr) *staged_out = std::move(refit);
@@ -223,7 +208,7 @@ LostMotionTerm fit_lost_motion_term(const CorrectorData& data, LostMotionMode mo
     try {
       if (backfit) {
         CorrectorData left = trained;
-        left.corrections_sensor_m -= predict_fold(*without.fitted, trained).corrections_sensor_m;
+        left.corrections_sensor_m -= predict_held_out(*without.fitted, trained).corrections_sensor_m;
         fold_fit = fit_lost_motion(chain, trained.joints_rad, trained.approach_sign,
                                    trained.fiducials_robot_m, deviation_robot_m(left), 1);
       } else {
@@ -236,8 +221,8 @@ LostMotionTerm fit_lost_motion_term(const CorrectorData& data, LostMotionMode mo
     const FitOutcome with =
         staged.fitted->refit(without_lost_motion(trained, fold_fit.beta_rad), settings);
     if (!with.fitted) continue;
-    const MethodPredictions p_without = predict_fold(*without.fitted, held_out);
-    const MethodPredictions p_with = predict_fold(*with.fitted, held_out);
+    const MethodPredictions p_without = predict_held_out(*without.fitted, held_out);
+    const MethodPredictions p_with = predict_held_out(*with.fitted, held_out);
     const Points3 term_m = lost_motion_correction_sensor_m(
         chain, data.T_robot_sensor, held_out.joints_rad, held_out.approach_sign, fold_fit.beta_rad);
     for (std::size_t i = 0; i < test.size(); ++i) {

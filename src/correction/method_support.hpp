@@ -10,6 +10,11 @@
 
 namespace vrreg::detail {
 
+/// Predicts every fiducial of `held_out` with `fitted`, in the method's blocks (corrections,
+/// stencils and, when the method has one, its own sd): cross-validation's folds and the
+/// lost-motion stage's (cross_validation.cpp).
+MethodPredictions predict_held_out(const FittedMethod& fitted, const CorrectorData& held_out);
+
 /// A stencil that says only why there is no prediction.
 inline Stencil flagged_stencil(StencilStatus status) {
   Stencil s;

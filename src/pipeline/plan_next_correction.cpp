@@ -11,6 +11,15 @@ namespace vrreg {
 
 planning::CorrectionSdAtParts correction_sd_at_parts(MeasurementSet measured,
                                                      RegisterOptions options) {
+  // What no number of fiducials mends is bad input, not "no sd yet": a joint-space model
+  // without the arm, or without the joints in the file, or with another count of them.
+  if (options.interpolation.method == InterpolationMethod::kJoint) {
+    VRREG_THROW_UNLESS(options.robot, "joint interpolation needs the robot");
+    VRREG_THROW_UNLESS(measured.n_joints == options.robot->n_joints(),
+                       "joint interpolation needs the fiducials' joint angles, "
+                           << options.robot->n_joints() << " per row for " << options.robot->name()
+                           << "; the measurements have " << measured.n_joints);
+  }
   return [measured = std::move(measured), options = std::move(options)](
              const std::vector<planning::PartPlan>& parts) {
     planning::CorrectionSd out;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "vrreg_test.hpp"
@@ -259,6 +260,59 @@ TEST_F(PlanNextLoop, ClosedLoopWithTheJointModelStopsOnItsOwnSd) {
   std::printf("joint loop, UR5 seed 3: %d fiducials, predicted %.4f mm, measured %.4f mm, "
               "Procedure 1 %.4f mm\n",
               r.n_fiducials, r.predicted_mm, r.adaptive_mm, r.procedure1_mm);
+}
+
+// --interpolation joint on measurements that can never carry the joint-space model (no joint
+// columns; a robot with another joint count) is refused at once, naming the file, not answered
+// with kriging's sd batch after batch.
+TEST_F(PlanNextCli, JointInterpolationWithoutTheJointsIsRefused) {
+  ASSERT_EQ(run_vrreg(plan_next("-o " + p("b1.csv"))).status, 0);
+  ASSERT_EQ(run_vrreg("simulate ur5 --plan " + p("b1.csv") + " --seed 3 -o " + p("m1.csv")).status,
+            0);
+  // m1.csv without its joint columns (q1_rad ..).
+  std::string without;
+  const std::string text = read_text(dir_ / "m1.csv");
+  std::size_t start = 0;
+  bool header = true;
+  std::vector<bool> keep;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    const std::string line = text.substr(start, end - start);
+    start = end == std::string::npos ? text.size() : end + 1;
+    if (line.empty() || line.starts_with("#")) continue;
+    std::vector<std::string> cells;
+    for (std::size_t at = 0;;) {
+      const std::size_t comma = line.find(',', at);
+      cells.push_back(line.substr(at, comma - at));
+      if (comma == std::string::npos) break;
+      at = comma + 1;
+    }
+    if (header) {
+      for (const std::string& name : cells) keep.push_back(!name.starts_with("q"));
+      header = false;
+    }
+    std::string out;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (keep[c]) out += (out.empty() ? "" : ",") + cells[c];
+    }
+    without += out + "\n";
+  }
+  write_text(dir_ / "nojoints.csv", without);
+  const CliResult no_joints =
+      run_vrreg(plan_next("--interpolation joint --measured " + p("nojoints.csv")));
+  EXPECT_NE(no_joints.status, 0);
+  EXPECT_NE(no_joints.err.find("nojoints.csv: joint interpolation needs the fiducials' joint "
+                               "angles, 6 per row"),
+            std::string::npos)
+      << no_joints.err;
+  const CliResult other_robot =
+      run_vrreg("plan-next --parts " + p("parts.csv") + " --robot lwr4 --goal-sd-mm 0.05 " +
+                "--interpolation joint --measured " + p("m1.csv"));
+  EXPECT_NE(other_robot.status, 0);
+  EXPECT_NE(other_robot.err.find("7 per row"), std::string::npos) << other_robot.err;
+  // The same file with kriging, and with its joints, is planned as before.
+  EXPECT_EQ(run_vrreg(plan_next("--measured " + p("nojoints.csv"))).status, 0);
+  EXPECT_EQ(run_vrreg(plan_next("--interpolation joint --measured " + p("m1.csv"))).status, 0);
 }
 
 TEST_F(PlanNextCli, BadInputNamesTheProblem) {

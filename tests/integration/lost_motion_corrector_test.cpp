@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "half_a1_cell.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/simulation/testbed.hpp"
@@ -29,26 +30,9 @@ std::vector<double> backlash_rad() {
           0.7 * kArcmin, 0.6 * kArcmin, 0.4 * kArcmin};
 }
 
-// A1 (25 mm lattice, every odd node a target) with grid index x <= 5, smooth DH errors,
-// repeatability and tracker noise, no transmission error, and lost motion `lost_motion_rad`.
+// The half of A1 with lost motion `lost_motion_rad` (half_a1_cell.hpp).
 MeasurementSet simulate_cell(const std::vector<double>& lost_motion_rad) {
-  const simulation::Testbed ur5 = simulation::ur5_testbed();
-  simulation::SimulationOptions o;
-  o.seed = 2;
-  o.errors = ur5.default_errors;
-  o.errors->robot.transmission_amplitude_rad.clear();
-  o.errors->robot.transmission_period_rad.clear();
-  o.errors->robot.lost_motion_rad = lost_motion_rad;
-  MeasurementSet set = experiments::to_measurement_set(
-      simulation::simulate_dataset(ur5, simulation::Dataset::kA1, o));
-  MeasurementSet kept = set;
-  kept.locations.clear();
-  for (const Location& loc : set.locations) {
-    Eigen::Vector3i n;
-    EXPECT_EQ(std::sscanf(loc.point.c_str(), "p%d_%d_%d", &n.x(), &n.y(), &n.z()), 3);
-    if (n.x() <= 5) kept.locations.push_back(loc);
-  }
-  return kept;
+  return testing::half_a1_cell(lost_motion_rad);
 }
 
 RegistrationModel register_cell(const MeasurementSet& set, LostMotionMode mode,

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "half_a1_cell.hpp"
 #include "vrreg/correction/kriging.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/registration/rigid.hpp"
@@ -33,25 +34,10 @@ struct Split {
   Cell fiducials, targets;
 };
 
-// A1 (25 mm lattice, visited row by row) in the half of the volume with grid index x <= 5: its
-// fiducials and targets; the joints' approach directions from the visiting order.
+// The half of A1 with lost motion `lost_motion_rad` (half_a1_cell.hpp), split into its fiducials
+// and targets.
 Split simulate_cell(const std::vector<double>& lost_motion_rad) {
-  const simulation::Testbed ur5 = simulation::ur5_testbed();
-  simulation::SimulationOptions o;
-  o.seed = 2;
-  o.errors = ur5.default_errors;
-  o.errors->robot.transmission_amplitude_rad.clear();
-  o.errors->robot.transmission_period_rad.clear();
-  o.errors->robot.lost_motion_rad = lost_motion_rad;
-  MeasurementSet set = experiments::to_measurement_set(
-      simulation::simulate_dataset(ur5, simulation::Dataset::kA1, o));
-  MeasurementSet kept = set;
-  kept.locations.clear();
-  for (const Location& loc : set.locations) {
-    Eigen::Vector3i n;
-    EXPECT_EQ(std::sscanf(loc.point.c_str(), "p%d_%d_%d", &n.x(), &n.y(), &n.z()), 3);
-    if (n.x() <= 5) kept.locations.push_back(loc);
-  }
+  const MeasurementSet kept = testing::half_a1_cell(lost_motion_rad);
   const std::vector<std::size_t> fiducials = kept.select(Role::kFiducial);
   const RegistrationResult registration =
       register_rigid(kept.sensor_points(fiducials), kept.robot_points(fiducials));

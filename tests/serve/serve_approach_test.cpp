@@ -134,16 +134,6 @@ TEST(HttpApproach, ReadsFromAndApproachForPointsAndBatches) {
   }
 }
 
-ServeOptions local_options(const std::string& path) {
-  ServeOptions o;
-  o.models = {{"cell", path}};
-  o.line = Endpoint{"127.0.0.1", 0};
-  o.http = Endpoint{"127.0.0.1", 0};
-  o.threads = 2;
-  o.reload_poll_ms = 0;
-  return o;
-}
-
 // A model without a lost-motion term: a direction changes nothing in the answer (the same bytes),
 // malformed directions are refused with code 1 and the connection goes on, and the audit log
 // records what was asked.

@@ -29,16 +29,6 @@ using ::testing::Not;
 using ::testing::StartsWith;
 using Clock = std::chrono::steady_clock;
 
-ServeOptions local_options(const std::string& path) {
-  ServeOptions o;
-  o.models = {{"cell", path}};
-  o.line = Endpoint{"127.0.0.1", 0};
-  o.http = Endpoint{"127.0.0.1", 0};
-  o.threads = 2;
-  o.reload_poll_ms = 0;
-  return o;
-}
-
 std::string number(double v) { return format_general(v, 17); }
 
 // The lattice cell's fiducials' bounding box, sensor frame [mm].

@@ -23,16 +23,6 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-ServeOptions local_options(const std::string& path) {
-  ServeOptions o;
-  o.models = {{"cell", path}};
-  o.line = Endpoint{"127.0.0.1", 0};
-  o.http = Endpoint{"127.0.0.1", 0};
-  o.threads = 2;
-  o.reload_poll_ms = 0;
-  return o;
-}
-
 std::string number(double v) { return format_general(v, 17); }
 
 // The pose request for a target, the orientation in `form`.

@@ -43,16 +43,6 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-ServeOptions local_options(const std::vector<ModelSource>& models) {
-  ServeOptions o;
-  o.models = models;
-  o.line = Endpoint{"127.0.0.1", 0};
-  o.http = Endpoint{"127.0.0.1", 0};
-  o.threads = 2;
-  o.reload_poll_ms = 0;
-  return o;
-}
-
 bool is_refusal(const std::string& reply) { return reply.rfind("(0,0,0,-", 0) == 0; }
 
 std::string request_line(const std::string& model, const Eigen::Vector3d& sensor_mm) {

@@ -10,6 +10,7 @@
 
 #include "io_test_helpers.hpp"
 #include "serve/line_protocol.hpp"
+#include "serve/service.hpp"
 #include "vrreg/core/units.hpp"
 #include "vrreg/io/model_json.hpp"
 #include "vrreg/vrreg.hpp"
@@ -102,6 +103,19 @@ class LineClient {
   boost::asio::ip::tcp::socket socket_;
   std::string buffer_;
 };
+
+/// A service on loopback (ports chosen by the system), 2 threads, no reload polling.
+inline ServeOptions local_options(const std::vector<ModelSource>& models) {
+  ServeOptions o;
+  o.models = models;
+  o.line = Endpoint{"127.0.0.1", 0};
+  o.http = Endpoint{"127.0.0.1", 0};
+  o.threads = 2;
+  o.reload_poll_ms = 0;
+  return o;
+}
+/// The same serving the model file `path` as "cell".
+inline ServeOptions local_options(const std::string& path) { return local_options({{"cell", path}}); }
 
 /// One HTTP/1.1 request on a fresh connection; returns "STATUS BODY".
 std::string http_request(unsigned short port, const std::string& method, const std::string& target,

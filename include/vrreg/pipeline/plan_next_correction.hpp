@@ -14,7 +14,9 @@ namespace vrreg {
 /// (interpolation method, robot for the joint-space model): registers them once when called and
 /// returns each part's predicted sd, the part's joints given (CorrectResult's predicted_sd_m).
 /// No sd, with the reason, when the registration refuses the fiducials (too few, no joints) or
-/// a part is not corrected (outside the method's support). Both are copied in.
+/// a part is not corrected (outside the method's support). Both are copied in. Throws InputError
+/// at once for the joint-space model without a robot, or on measurements without its joints
+/// (none, or another count): no number of fiducials mends that.
 planning::CorrectionSdAtParts correction_sd_at_parts(MeasurementSet measured,
                                                      RegisterOptions options);
 
