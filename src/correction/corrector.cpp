@@ -449,7 +449,7 @@ std::optional<Corrector> Corrector::try_fit(const CorrectorData& given,
         detail::build_field_table(exact, data.fiducials_robot_m, data.noise_sd_m);
     if (table) {
       impl->fitted = detail::tabulated_method(std::move(*table), fitted, impl->fitted->save(),
-                                              impl->fitted->describe());
+                                              impl->fitted->describe(), data.values);
       impl->tabulated = true;
     }
   }
@@ -495,7 +495,7 @@ Corrector Corrector::restore(const SavedCorrector& saved, const CorrectorData& g
   impl->cv_rms_m = saved.cv_rms_m;
   impl->cv_squared_error_m2 = saved.cv_squared_error_m2;
   if (detail::is_tabulated(saved.state)) {
-    impl->fitted = detail::restore_tabulated(saved.state, saved.method);
+    impl->fitted = detail::restore_tabulated(saved.state, saved.method, data.values);
     impl->tabulated = true;
   } else {
     impl->fitted = correction_method(saved.method)

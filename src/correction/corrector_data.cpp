@@ -27,6 +27,7 @@ CorrectorData CorrectorData::subset(const std::vector<Eigen::Index>& keep) const
   out.T_robot_sensor = T_robot_sensor;
   out.robot = robot;
   out.noise_sd_m = noise_sd_m;
+  out.values = values;
   const auto n = static_cast<Eigen::Index>(keep.size());
   out.fiducials_robot_m.resize(3, n);
   out.registered_robot_m.resize(3, n);

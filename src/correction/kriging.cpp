@@ -218,7 +218,7 @@ Eigen::Vector3d KrigingModel::nugget_sd_m() const {
 
 bool KrigingModel::exact() const { return impl_->exact(); }
 
-std::string KrigingModel::describe() const {
+std::string KrigingModel::describe(CorrectionValues values) const {
   std::ostringstream out;
   out << "kriging ("
       << (impl_->options.kernel == KrigingKernel::matern52 ? "Matern 5/2" : "squared exponential")
@@ -231,8 +231,8 @@ std::string KrigingModel::describe() const {
   for (std::size_t axis = 0; axis < 3; ++axis) {
     const KrigingHyperparameters& h = impl_->axes[axis].hyperparameters;
     out << "; " << names[axis] << ": l = " << h.length_m(0) * 1e3 << " " << h.length_m(1) * 1e3
-        << " " << h.length_m(2) * 1e3 << " mm, s = " << h.signal_sd_m * 1e3
-        << " mm, nugget = " << h.nugget_sd_m * 1e3 << " mm";
+        << " " << h.length_m(2) * 1e3 << " mm, s = " << h.signal_sd_m * 1e3 << " "
+        << milli_unit(values) << ", nugget = " << h.nugget_sd_m * 1e3 << " " << milli_unit(values);
     if (impl_->axes[axis].latent_sd_scale != 1.0)
       out << ", sd x " << impl_->axes[axis].latent_sd_scale;
   }

@@ -64,17 +64,18 @@ KrigingModel fit_in_frame(const KrigingFrame& frame, const CorrectorData& data,
 class KrigingMethod final : public FittedMethod {
  public:
   KrigingMethod(KrigingModel model, KrigingOptions options, KrigingFrame frame,
-                SupportBox support)
+                SupportBox support, CorrectionValues values)
       : model_(std::move(model)),
         options_(std::move(options)),
         frame_(std::move(frame)),
-        support_(support) {}
+        support_(support),
+        values_(values) {}
 
   [[nodiscard]] InterpolationMethod method() const override {
     return InterpolationMethod::kKriging;
   }
   [[nodiscard]] std::string describe() const override {
-    return model_.describe() +
+    return model_.describe(values_) +
            (frame_.cylinder ? "; in cylindrical coordinates about the base axis (r, r0 phi, z)"
                             : "; in Cartesian robot coordinates");
   }
@@ -92,7 +93,7 @@ class KrigingMethod final : public FittedMethod {
       (*options.latent_sd_scale)[a] = model_.axes()[a].latent_sd_scale;
     }
     return fitted<KrigingMethod>(fit_in_frame(frame_, subset, options, &h), options, frame_,
-                                 field_support(subset.fiducials_robot_m));
+                                 field_support(subset.fiducials_robot_m), subset.values);
   }
 
   void predict(const MethodQuery& query, Eigen::Index begin, Eigen::Index end,
@@ -125,6 +126,7 @@ class KrigingMethod final : public FittedMethod {
   KrigingOptions options_;
   KrigingFrame frame_;
   SupportBox support_;
+  CorrectionValues values_;  ///< the unit describe() prints the signal and nugget in
 };
 
 constexpr Eigen::Index kLargeCellFitSubset = 300;
@@ -159,7 +161,7 @@ FitOutcome fit_kriging(const CorrectorData& data, const MethodSettings& /*settin
   KrigingFrame frame = frame_of(data);
   KrigingModel model = fit_in_frame(frame, data, options, nullptr);
   return fitted<KrigingMethod>(std::move(model), options, std::move(frame),
-                               field_support(data.fiducials_robot_m));
+                               field_support(data.fiducials_robot_m), data.values);
 }
 
 std::unique_ptr<const FittedMethod> restore_kriging(const MethodState& state,
@@ -171,7 +173,7 @@ std::unique_ptr<const FittedMethod> restore_kriging(const MethodState& state,
                             frame.values(data.fiducials_robot_m, data.corrections_sensor_m), state);
   return std::make_unique<const KrigingMethod>(
       std::move(model), options_for(data), std::move(frame),
-      field_support(data.fiducials_robot_m));
+      field_support(data.fiducials_robot_m), data.values);
 }
 
 }  // namespace

@@ -12,11 +12,15 @@ class RbfMethod final : public FittedMethod {
  public:
   // The model is of the corrections' robot-frame components (R epsilon): per-component
   // smoothing must not depend on where the tracker stands.
-  RbfMethod(RbfModel model, SupportBox support, const Eigen::Matrix3d& R_robot_sensor)
-      : model_(std::move(model)), support_(support), R_robot_sensor_(R_robot_sensor) {}
+  RbfMethod(RbfModel model, SupportBox support, const Eigen::Matrix3d& R_robot_sensor,
+            CorrectionValues values)
+      : model_(std::move(model)),
+        support_(support),
+        R_robot_sensor_(R_robot_sensor),
+        values_(values) {}
 
   [[nodiscard]] InterpolationMethod method() const override { return InterpolationMethod::kRbf; }
-  [[nodiscard]] std::string describe() const override { return model_.describe(); }
+  [[nodiscard]] std::string describe() const override { return model_.describe(values_); }
   // A local model solves a system per point: blocks of 256 let a long batch report progress.
   [[nodiscard]] Eigen::Index block_size() const override { return 256; }
 
@@ -49,6 +53,7 @@ class RbfMethod final : public FittedMethod {
   RbfModel model_;
   SupportBox support_;
   Eigen::Matrix3d R_robot_sensor_;
+  CorrectionValues values_;  ///< the unit describe() prints the LOO RMS in
 };
 
 std::string rbf_unavailable(const CorrectorData& data, const MethodSettings&) {
@@ -68,7 +73,7 @@ FitOutcome fit_rbf(const CorrectorData& data, const MethodSettings& /*settings*/
   if (data.size() > kLargeCellFiducials) options.smoothing_block = kLargeCellSmoothingBlock;
   return fitted<RbfMethod>(
       RbfModel::fit(data.fiducials_robot_m, R * data.corrections_sensor_m, options),
-      field_support(data.fiducials_robot_m), R);
+      field_support(data.fiducials_robot_m), R, data.values);
 }
 
 FitOutcome RbfMethod::refit(const CorrectorData& subset, const MethodSettings& settings) const {
@@ -78,7 +83,7 @@ FitOutcome RbfMethod::refit(const CorrectorData& subset, const MethodSettings& s
   const Eigen::Matrix3d& R = subset.T_robot_sensor.rotation;
   return fitted<RbfMethod>(
       RbfModel::fit(subset.fiducials_robot_m, R * subset.corrections_sensor_m, options),
-      field_support(subset.fiducials_robot_m), R);
+      field_support(subset.fiducials_robot_m), R, subset.values);
 }
 
 std::unique_ptr<const FittedMethod> restore_rbf(const MethodState& state, const CorrectorData& data,
@@ -86,7 +91,7 @@ std::unique_ptr<const FittedMethod> restore_rbf(const MethodState& state, const 
   const Eigen::Matrix3d& R = data.T_robot_sensor.rotation;
   return std::make_unique<const RbfMethod>(
       RbfModel::restore(data.fiducials_robot_m, R * data.corrections_sensor_m, state),
-      field_support(data.fiducials_robot_m), R);
+      field_support(data.fiducials_robot_m), R, data.values);
 }
 
 }  // namespace

@@ -97,11 +97,12 @@ void check(FieldTable& t, const ExactField& exact) {
 class TabulatedMethod final : public FittedMethod {
  public:
   TabulatedMethod(FieldTable table, InterpolationMethod method, MethodState exact_state,
-                  std::string exact_description)
+                  std::string exact_description, CorrectionValues values)
       : table_(std::move(table)),
         method_(method),
         exact_state_(std::move(exact_state)),
-        exact_description_(std::move(exact_description)) {}
+        exact_description_(std::move(exact_description)),
+        values_(values) {}
 
   [[nodiscard]] InterpolationMethod method() const override { return method_; }
   [[nodiscard]] bool has_own_sd() const override { return table_.has_sd; }
@@ -109,8 +110,9 @@ class TabulatedMethod final : public FittedMethod {
     std::ostringstream out;
     out << exact_description_ << "; tabulated every " << units::m_to_mm(table_.spacing_m)
         << " mm (" << table_.nodes[0] << " x " << table_.nodes[1] << " x " << table_.nodes[2]
-        << " nodes), within " << table_.max_correction_deviation_m * 1e6
-        << " um of the model (RMS " << table_.rms_correction_deviation_m * 1e6 << " um";
+        << " nodes), within " << table_.max_correction_deviation_m * 1e6 << " "
+        << micro_unit(values_) << " of the model (RMS "
+        << table_.rms_correction_deviation_m * 1e6 << " " << micro_unit(values_);
     if (table_.has_sd) out << ", in the sd";
     out << ")";
     if (table_.has_sd) out << " and its sd within " << table_.max_sd_relative_deviation * 100 << " %";
@@ -159,6 +161,7 @@ class TabulatedMethod final : public FittedMethod {
   InterpolationMethod method_;
   MethodState exact_state_;
   std::string exact_description_;
+  CorrectionValues values_;  ///< the unit describe() prints the table's deviations in
 };
 
 }  // namespace
@@ -203,9 +206,10 @@ std::optional<FieldTable> build_field_table(const ExactField& exact, const Const
 
 std::unique_ptr<const FittedMethod> tabulated_method(FieldTable table, InterpolationMethod method,
                                                      MethodState exact_state,
-                                                     std::string exact_description) {
+                                                     std::string exact_description,
+                                                     CorrectionValues values) {
   return std::make_unique<const TabulatedMethod>(std::move(table), method, std::move(exact_state),
-                                                 std::move(exact_description));
+                                                 std::move(exact_description), values);
 }
 
 bool is_tabulated(const MethodState& state) {
@@ -227,9 +231,10 @@ MethodState exact_state_of(const MethodState& state) {
 }
 
 std::unique_ptr<const FittedMethod> restore_tabulated(const MethodState& state,
-                                                      InterpolationMethod method) {
+                                                      InterpolationMethod method,
+                                                      CorrectionValues values) {
   return tabulated_method(FieldTable::restore(state), method, exact_state_of(state),
-                          state.text("exact_description"));
+                          state.text("exact_description"), values);
 }
 
 }  // namespace vrreg::detail

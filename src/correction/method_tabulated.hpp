@@ -24,10 +24,12 @@ std::optional<FieldTable> build_field_table(const ExactField& exact, const Const
                              std::optional<double> noise_sd_m);
 
 /// The tabulated form of a fitted method: `exact_state` is the exact method's saved state (kept
-/// so that the exact model can be restored), `exact_description` its description.
+/// so that the exact model can be restored), `exact_description` its description; `values` what
+/// the field's values are (the unit its description prints the table's deviations in).
 std::unique_ptr<const FittedMethod> tabulated_method(FieldTable table, InterpolationMethod method,
                                                      MethodState exact_state,
-                                                     std::string exact_description);
+                                                     std::string exact_description,
+                                                     CorrectionValues values);
 
 /// True when `state` is a tabulated method's.
 bool is_tabulated(const MethodState& state);
@@ -37,6 +39,7 @@ MethodState exact_state_of(const MethodState& state);
 
 /// The tabulated method saved in `state`.
 std::unique_ptr<const FittedMethod> restore_tabulated(const MethodState& state,
-                                                      InterpolationMethod method);
+                                                      InterpolationMethod method,
+                                                      CorrectionValues values);
 
 }  // namespace vrreg::detail

@@ -44,6 +44,7 @@ CorrectorData tangent_data(const CorrectorData& data, const std::vector<Eigen::M
         rotation_log(rotations[static_cast<std::size_t>(j)] * mean.transpose());
   }
   tangent.noise_sd_m = noise_sd_rad;
+  tangent.values = CorrectionValues::kRotationRad;
   tangent.approach_sign.resize(0, 0);  // lost motion is a position term: no stage on rotations
   return tangent;
 }

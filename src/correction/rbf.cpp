@@ -176,14 +176,14 @@ Eigen::Vector3d RbfModel::smoothing() const {
 
 bool RbfModel::exact() const { return impl_->exact(); }
 
-std::string RbfModel::describe() const {
+std::string RbfModel::describe(CorrectionValues values) const {
   std::ostringstream out;
   out << "rbf (r^3, polynomial degree " << impl_->options.polynomial_degree << ") of "
       << impl_->positions_m.cols() << " fiducials, "
       << (impl_->exact() ? std::string("global")
                          : "local (" + std::to_string(impl_->options.local_neighbours) +
                                " nearest)")
-      << "; LOO RMS " << cv_rms_m().transpose() * 1e3 << " mm";
+      << "; LOO RMS " << cv_rms_m().transpose() * 1e3 << " " << milli_unit(values);
   return out.str();
 }
 

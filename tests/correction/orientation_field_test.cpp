@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "correction_fixtures.hpp"
@@ -113,6 +114,55 @@ TEST(OrientationField, LinearTangentFieldIsReproducedByTrilinearInterpolation) {
     targets.col(t) = origin + Eigen::Vector3d(rng.uniform(), rng.uniform(), rng.uniform()) * 0.25;
   }
   EXPECT_LT(worst_target_angle(field, kT, targets, linear), 1e-13);
+}
+
+// The tangent field's values are rotation vectors: its description prints their sizes in mrad
+// and urad (kriging's signal and nugget, rbf's leave-one-out RMS, a table's deviation), lengths
+// still in mm; the same after a restore.
+TEST(OrientationField, DescriptionsPrintRotationsInRadians) {
+  const Eigen::Vector3d origin(0.3, -0.1, 0.1);
+  const auto wavy = [&origin](const Eigen::Vector3d& p) {
+    const Eigen::Vector3d d = p - origin;
+    return Eigen::Matrix3d(rotation_exp(
+        Eigen::Vector3d(2e-3 * std::sin(9.0 * d.x()), 1e-3 * std::cos(7.0 * d.y()), 3e-3 * d.z())));
+  };
+  const Points3 fiducials = testing::grid_points(6, 6, 6, Eigen::Vector3d::Constant(0.05), origin);
+  const OrientationCell c = cell(fiducials, kT, wavy);
+  const Points3 residuals = rotation_residuals_rad(kT.rotation, c.measured, c.commanded);
+  for (const InterpolationMethod m : {InterpolationMethod::kKriging, InterpolationMethod::kRbf}) {
+    for (const bool tabulate : {false, true}) {
+      CorrectorOptions options;
+      options.interpolation.method = m;
+      options.tabulate = tabulate;
+      const Corrector positions = Corrector::fit(c.data, options);
+      const OrientationCorrector field = OrientationCorrector::fit(positions, c.data, residuals);
+      const std::string text = field.describe();
+      SCOPED_TRACE(text);
+      if (m == InterpolationMethod::kKriging) {
+        EXPECT_NE(text.find(" mrad, nugget = "), std::string::npos);
+        EXPECT_EQ(text.find(" mm, nugget"), std::string::npos);
+        EXPECT_NE(text.find(" mm, s = "), std::string::npos);  // the length scales stay lengths
+      } else {
+        // "...; LOO RMS a b c mrad" up to the next ';' or ','.
+        const std::size_t loo = text.find("LOO RMS");
+        ASSERT_NE(loo, std::string::npos);
+        const std::string rms = text.substr(loo, text.find_first_of(";,", loo) - loo);
+        EXPECT_EQ(rms.substr(rms.size() - 5), " mrad") << rms;
+      }
+      EXPECT_EQ(text.find(" um"), std::string::npos);
+      if (tabulate && text.find("tabulated") != std::string::npos) {
+        EXPECT_NE(text.find(" urad of the model (RMS "), std::string::npos);
+      }
+      if (m == InterpolationMethod::kKriging) {
+        EXPECT_NE(positions.describe().find(" mm, nugget = "), std::string::npos);
+      } else {
+        EXPECT_EQ(positions.describe().find("mrad"), std::string::npos);
+      }
+      const OrientationCorrector restored =
+          OrientationCorrector::restore(field.save(), positions, c.data, residuals);
+      EXPECT_EQ(restored.describe(), text);
+    }
+  }
 }
 
 TEST(OrientationField, AFieldNotBetterThanNoneIsKeptButNotApplied) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "vrreg/core/types.hpp"
+#include "vrreg/correction/correction_values.hpp"
 #include "vrreg/kinematics/serial_chain.hpp"
 
 namespace vrreg {
@@ -29,6 +30,8 @@ struct CorrectorData {
   std::optional<kinematics::SerialChain> robot{};  ///< the arm the joints belong to (to the marker)
   /// The measured noise of one fiducial's averaged reading per axis (Eq. 9) [m], when known.
   std::optional<double> noise_sd_m{};
+  /// What corrections_sensor_m holds (the field is a length in every method's arithmetic).
+  CorrectionValues values = CorrectionValues::kLengthM;
 
   /// Data of fiducials measured at `fiducials_sensor_m` and commanded to `fiducials_robot_m`
   /// [m], with their corrections (Eq. 6): the registered positions are T applied to the former.

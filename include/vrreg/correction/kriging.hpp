@@ -12,6 +12,7 @@
 #include <string>
 
 #include "vrreg/core/types.hpp"
+#include "vrreg/correction/correction_values.hpp"
 #include "vrreg/correction/field_prediction.hpp"
 #include "vrreg/correction/method_state.hpp"
 
@@ -112,8 +113,9 @@ class KrigingModel {
   [[nodiscard]] Eigen::Vector3d nugget_sd_m() const;
   /// True when predictions use all fiducials (J <= exact_limit).
   [[nodiscard]] bool exact() const;
-  /// E.g. "kriging (Matern 5/2, trend 2) of 1167 fiducials, exact; x: l = 0.12 0.2 0.3 m ...".
-  [[nodiscard]] std::string describe() const;
+  /// E.g. "kriging (Matern 5/2, trend 2) of 1167 fiducials, exact; x: l = 0.12 0.2 0.3 m ...",
+  /// its signal and nugget sd in `values`' unit.
+  [[nodiscard]] std::string describe(CorrectionValues values = CorrectionValues::kLengthM) const;
 
  private:
   struct Impl;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "vrreg/core/types.hpp"
+#include "vrreg/correction/correction_values.hpp"
 #include "vrreg/correction/field_prediction.hpp"
 #include "vrreg/correction/method_state.hpp"
 
@@ -64,7 +65,8 @@ class RbfModel {
   /// Chosen smoothing lambda per axis (kernel units, m^3).
   [[nodiscard]] Eigen::Vector3d smoothing() const;
   [[nodiscard]] bool exact() const;
-  [[nodiscard]] std::string describe() const;
+  /// Its leave-one-out RMS in `values`' unit.
+  [[nodiscard]] std::string describe(CorrectionValues values = CorrectionValues::kLengthM) const;
 
  private:
   struct Impl;
