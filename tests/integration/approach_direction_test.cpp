@@ -10,7 +10,9 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <vector>
 
+#include "half_a1_cell.hpp"
 #include "vrreg/correction/kriging.hpp"
 #include "vrreg/experiments/simulated_measurements.hpp"
 #include "vrreg/io/measurement_csv.hpp"
@@ -70,16 +72,11 @@ std::vector<simulation::CommandedLocation> plan_cell(const Eigen::VectorXd& dire
 }
 
 simulation::SimulationOptions backlash_cell(bool repeatability, bool lost_motion = true) {
-  const simulation::Testbed ur5 = simulation::ur5_testbed();
-  simulation::SimulationOptions o;
-  o.seed = 2;
-  o.errors = ur5.default_errors;
-  o.errors->robot.transmission_amplitude_rad.clear();
-  o.errors->robot.transmission_period_rad.clear();
-  o.errors->robot.lost_motion_rad = {0.8 * kArcmin, 0.2 * kArcmin, 0.15 * kArcmin,
-                                     0.7 * kArcmin, 0.6 * kArcmin, 0.4 * kArcmin};
+  simulation::SimulationOptions o = testing::ur5_lost_motion_options(
+      lost_motion ? std::vector<double>{0.8 * kArcmin, 0.2 * kArcmin, 0.15 * kArcmin,
+                                        0.7 * kArcmin, 0.6 * kArcmin, 0.4 * kArcmin}
+                  : std::vector<double>{});
   if (!repeatability) o.errors->robot.repeatability_sigma_m = 0.0;
-  if (!lost_motion) o.errors->robot.lost_motion_rad.clear();
   return o;
 }
 

@@ -14,16 +14,22 @@
 
 namespace vrreg::testing {
 
-inline MeasurementSet half_a1_cell(const std::vector<double>& lost_motion_rad) {
-  const simulation::Testbed ur5 = simulation::ur5_testbed();
+// The simulation of the UR5 test bed (seed 2) without its transmission error, with lost motion
+// `lost_motion_rad` (empty: none).
+inline simulation::SimulationOptions ur5_lost_motion_options(
+    const std::vector<double>& lost_motion_rad) {
   simulation::SimulationOptions o;
   o.seed = 2;
-  o.errors = ur5.default_errors;
+  o.errors = simulation::ur5_testbed().default_errors;
   o.errors->robot.transmission_amplitude_rad.clear();
   o.errors->robot.transmission_period_rad.clear();
   o.errors->robot.lost_motion_rad = lost_motion_rad;
-  const MeasurementSet set = experiments::to_measurement_set(
-      simulation::simulate_dataset(ur5, simulation::Dataset::kA1, o));
+  return o;
+}
+
+inline MeasurementSet half_a1_cell(const std::vector<double>& lost_motion_rad) {
+  const MeasurementSet set = experiments::to_measurement_set(simulation::simulate_dataset(
+      simulation::ur5_testbed(), simulation::Dataset::kA1, ur5_lost_motion_options(lost_motion_rad)));
   MeasurementSet kept = set;
   kept.locations.clear();
   for (const Location& loc : set.locations) {
